@@ -1,0 +1,410 @@
+#include "io/JsonInput.hpp"
+
+#include "io/Resources.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <valijson/adapters/nlohmann_json_adapter.hpp>
+#include <valijson/schema.hpp>
+#include <valijson/schema_parser.hpp>
+#include <valijson/validator.hpp>
+
+namespace hvi::io {
+
+using nlohmann::json;
+
+namespace {
+/// JSON has no NaN or infinity, but hand-edited files and other tools write them. Re-read
+/// the text with those tokens quoted so the error can name the key that holds them.
+void reportNonFiniteTokens(const std::string& text, const std::string& label) {
+    static const std::regex token(R"(([:\[,]\s*)(-?(?:NaN|nan|Infinity|inf|Inf))(?=\s*[,\]}]))");
+    const std::string quoted = std::regex_replace(text, token, "$1\"\\u0001$2\"");
+    if (quoted == text) {
+        return;
+    }
+    json document = json::parse(quoted, nullptr, false);
+    if (document.is_discarded()) {
+        return;
+    }
+    std::vector<InputIssue> issues;
+    std::function<void(const json&, const std::string&)> walk = [&](const json& v,
+                                                                    const std::string& ptr) {
+        if (v.is_string() && !v.get<std::string>().empty() && v.get<std::string>()[0] == '\x01') {
+            issues.push_back({label, ptr, "is " + v.get<std::string>().substr(1) +
+                                              ", not a finite number", "a finite number"});
+        } else if (v.is_object()) {
+            for (const auto& [k, sub] : v.items()) {
+                walk(sub, ptr + "/" + k);
+            }
+        } else if (v.is_array()) {
+            for (std::size_t i = 0; i < v.size(); ++i) {
+                walk(v[i], ptr + "/" + std::to_string(i));
+            }
+        }
+    };
+    walk(document, "");
+    if (!issues.empty()) {
+        throw InputError(std::move(issues));
+    }
+}
+} // namespace
+
+json parseJsonText(const std::string& text, const std::string& label) {
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& e) {
+        reportNonFiniteTokens(text, label);
+        // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3,
+        // column 5: syntax error ..."; keep only the part after the bracketed tag.
+        std::string message = e.what();
+        if (auto pos = message.find("] "); pos != std::string::npos) {
+            message = message.substr(pos + 2);
+        }
+        throw InputError(label, "", "not valid JSON: " + message, "a JSON document");
+    }
+}
+
+json readJsonFile(const std::string& path) {
+    std::ostringstream text;
+    if (path == "-") {
+        text << std::cin.rdbuf();
+    } else {
+        std::ifstream in(path);
+        if (!in) {
+            throw InputError(path, "", "cannot be read", "an existing, readable JSON file");
+        }
+        text << in.rdbuf();
+    }
+    return parseJsonText(text.str(), path);
+}
+
+const json& schema(const std::string& schemaName) {
+    static std::mutex guard;
+    static std::map<std::string, json> cache;
+    std::lock_guard<std::mutex> lock(guard);
+    auto it = cache.find(schemaName);
+    if (it == cache.end()) {
+        const std::string key = "schemas/" + schemaName + ".schema.json";
+        it = cache.emplace(schemaName, json::parse(resources::get(key))).first;
+    }
+    return it->second;
+}
+
+namespace {
+
+/// Resolves a local "$ref" ("#/definitions/x") against the schema root.
+const json* resolveRef(const json& root, const json* node) {
+    for (int depth = 0; node && node->is_object() && node->contains("$ref") && depth < 16;
+         ++depth) {
+        const std::string ref = (*node)["$ref"].get<std::string>();
+        if (ref.rfind("#", 0) != 0) {
+            return node;
+        }
+        node = &root.at(json::json_pointer(ref.substr(1)));
+    }
+    return node;
+}
+
+/// True when `document` satisfies a discriminating "if" of the simple form used in our
+/// schemas: {"properties": {"key": {"const": value}}, "required": ["key"]}.
+bool simpleIfMatches(const json& ifSchema, const json& document) {
+    if (!document.is_object() || !ifSchema.contains("properties")) {
+        return false;
+    }
+    for (const auto& [key, sub] : ifSchema["properties"].items()) {
+        if (!sub.contains("const")) {
+            return false;
+        }
+        auto it = document.find(key);
+        if (it == document.end() || *it != sub["const"]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/// Collects the property schemas that apply to an object, following $ref, allOf and the
+/// matching if/then branches.
+void collectProperties(const json& root, const json* node, const json& document,
+                       std::map<std::string, const json*>& out) {
+    node = resolveRef(root, node);
+    if (!node || !node->is_object()) {
+        return;
+    }
+    if (node->contains("properties")) {
+        for (const auto& [key, sub] : (*node)["properties"].items()) {
+            out[key] = &sub; // unresolved: a "default" may sit beside a "$ref"
+        }
+    }
+    if (node->contains("allOf")) {
+        for (const auto& sub : (*node)["allOf"]) {
+            collectProperties(root, &sub, document, out);
+        }
+    }
+    if (node->contains("if") && node->contains("then") &&
+        simpleIfMatches((*node)["if"], document)) {
+        collectProperties(root, &(*node)["then"], document, out);
+    }
+}
+
+/// The schema node describing the value at `pointer` in `document`, or nullptr.
+const json* schemaNodeAt(const json& root, const json& document, const std::string& pointer) {
+    const json* node = &root;
+    const json* value = &document;
+    std::string rest = pointer;
+    while (!rest.empty()) {
+        auto next = rest.find('/', 1);
+        std::string token = rest.substr(1, next == std::string::npos ? std::string::npos : next - 1);
+        rest = next == std::string::npos ? "" : rest.substr(next);
+        node = resolveRef(root, node);
+        if (!node) {
+            return nullptr;
+        }
+        if (value && value->is_array() && node->contains("items")) {
+            node = &(*node)["items"];
+            std::size_t index = 0;
+            try {
+                index = std::stoul(token);
+            } catch (...) {
+                return nullptr;
+            }
+            value = index < value->size() ? &(*value)[index] : nullptr;
+            continue;
+        }
+        std::map<std::string, const json*> properties;
+        collectProperties(root, node, value ? *value : json::object(), properties);
+        auto it = properties.find(token);
+        if (it == properties.end()) {
+            return nullptr;
+        }
+        node = it->second;
+        value = (value && value->is_object() && value->contains(token)) ? &(*value)[token]
+                                                                         : nullptr;
+    }
+    return node;
+}
+
+/// "(what was expected)": the property's description (with its unit) and its bounds.
+std::string describe(const json& root, const json* raw) {
+    const json* node = resolveRef(root, raw);
+    if (!raw || !node || !node->is_object()) {
+        return "";
+    }
+    std::string text = raw->value("description", node->value("description", ""));
+    auto addBound = [&](const char* key, const char* op) {
+        if (node->contains(key)) {
+            text += (text.empty() ? "" : ", ") + std::string(op) + " " + (*node)[key].dump();
+        }
+    };
+    addBound("exclusiveMinimum", ">");
+    addBound("minimum", ">=");
+    addBound("exclusiveMaximum", "<");
+    addBound("maximum", "<=");
+    if (node->contains("enum")) {
+        std::string choices;
+        for (const auto& v : (*node)["enum"]) {
+            choices += (choices.empty() ? "" : ", ") + v.dump();
+        }
+        text += (text.empty() ? "one of " : "; one of ") + choices;
+    }
+    return text;
+}
+
+std::string escapePointerToken(const std::string& token) {
+    std::string out;
+    for (char c : token) {
+        if (c == '~') {
+            out += "~0";
+        } else if (c == '/') {
+            out += "~1";
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+/// valijson context ["<root>", "[threat]", "[diameter_mm]"] -> "/threat/diameter_mm".
+std::string contextToPointer(const std::vector<std::string>& context) {
+    std::string pointer;
+    for (const auto& part : context) {
+        if (part.size() >= 2 && part.front() == '[' && part.back() == ']') {
+            pointer += "/" + escapePointerToken(part.substr(1, part.size() - 2));
+        }
+    }
+    return pointer;
+}
+
+/// Rewrites valijson's wording into the short form of our error lines, and spots the
+/// unknown-key case so the message names the key.
+std::string rewriteProblem(const std::string& description, const json& document,
+                           const std::string& pointer, std::string& pointerOut) {
+    pointerOut = pointer;
+    const std::string unknownMarker = "could not be validated using 'properties' or "
+                                      "'additionalProperties' constraints: '";
+    if (auto pos = description.find(unknownMarker); pos != std::string::npos) {
+        std::string key = description.substr(pos + unknownMarker.size());
+        if (auto end = key.rfind('\''); end != std::string::npos) {
+            key = key.substr(0, end);
+        }
+        pointerOut = pointer + "/" + escapePointerToken(key);
+        return "unknown key '" + key + "' (misspelt? remove it or use a documented key)";
+    }
+    const std::string missingMarker = "Missing required property '";
+    if (auto pos = description.find(missingMarker); pos != std::string::npos) {
+        std::string key = description.substr(pos + missingMarker.size());
+        if (auto end = key.rfind('\''); end != std::string::npos) {
+            key = key.substr(0, end);
+        }
+        pointerOut = pointer + "/" + escapePointerToken(key);
+        return "required key is missing";
+    }
+    std::string problem = description;
+    try {
+        const json& value = document.at(json::json_pointer(pointer));
+        problem += " (got " + value.dump() + ")";
+    } catch (...) {
+    }
+    return problem;
+}
+
+struct CompiledSchema {
+    valijson::Schema schema;
+};
+
+const valijson::Schema& compiledSchema(const std::string& schemaName) {
+    static std::mutex guard;
+    static std::map<std::string, std::unique_ptr<CompiledSchema>> cache;
+    std::lock_guard<std::mutex> lock(guard);
+    auto& slot = cache[schemaName];
+    if (!slot) {
+        slot = std::make_unique<CompiledSchema>();
+        valijson::SchemaParser parser(valijson::SchemaParser::kDraft7);
+        valijson::adapters::NlohmannJsonAdapter adapter(schema(schemaName));
+        parser.populateSchema(adapter, slot->schema);
+    }
+    return slot->schema;
+}
+
+} // namespace
+
+void validateAgainstSchema(const json& document, const std::string& schemaName,
+                           const std::string& file) {
+    const valijson::Schema& compiled = compiledSchema(schemaName);
+    valijson::Validator validator(valijson::Validator::kStrongTypes);
+    valijson::ValidationResults results;
+    valijson::adapters::NlohmannJsonAdapter target(document);
+    if (validator.validate(compiled, target, &results)) {
+        return;
+    }
+    // valijson reports a violation at every level of nesting (the leaf, then each enclosing
+    // object and the if/then or allOf that failed). Keep the deepest, most specific ones.
+    struct Raw {
+        std::string pointer;
+        std::string description;
+    };
+    std::vector<Raw> raw;
+    valijson::ValidationResults::Error error;
+    while (results.popError(error)) {
+        raw.push_back({contextToPointer(error.context), error.description});
+    }
+    const json& root = schema(schemaName);
+    std::vector<InputIssue> issues;
+    std::set<std::string> seen;
+    for (const auto& candidate : raw) {
+        const bool isSummary =
+            candidate.description.find("Failed to validate against") != std::string::npos ||
+            candidate.description.find("Failed to validate item") != std::string::npos ||
+            candidate.description.find("Failed to validate against child schema") !=
+                std::string::npos ||
+            candidate.description.find("Failed to validate value for property") !=
+                std::string::npos ||
+            candidate.description.find("Failed to validate against schema associated") !=
+                std::string::npos ||
+            candidate.description.find("Failed to validate against 'then'") !=
+                std::string::npos;
+        bool hasDeeper = false;
+        for (const auto& other : raw) {
+            if (other.pointer.size() > candidate.pointer.size() &&
+                other.pointer.rfind(candidate.pointer + "/", 0) == 0) {
+                hasDeeper = true;
+                break;
+            }
+        }
+        if (isSummary || (hasDeeper && candidate.description.find("could not be validated") ==
+                                           std::string::npos &&
+                          candidate.description.find("Missing required") == std::string::npos)) {
+            continue;
+        }
+        std::string pointer;
+        std::string problem = rewriteProblem(candidate.description, document, candidate.pointer,
+                                             pointer);
+        if (!seen.insert(pointer + "|" + problem).second) {
+            continue;
+        }
+        issues.push_back({file, pointer, problem, describe(root, schemaNodeAt(root, document, pointer))});
+    }
+    if (issues.empty()) {
+        issues.push_back({file, "", "does not match the schema '" + schemaName + "'", ""});
+    }
+    throw InputError(std::move(issues));
+}
+
+namespace {
+void fillDefaults(const json& root, const json* node, json& value) {
+    node = resolveRef(root, node);
+    if (!node || !value.is_object()) {
+        return;
+    }
+    std::map<std::string, const json*> properties;
+    collectProperties(root, node, value, properties);
+    for (const auto& [key, sub] : properties) {
+        if (!value.contains(key) && sub && sub->contains("default")) {
+            value[key] = (*sub)["default"];
+        }
+        if (value.contains(key) && value[key].is_object()) {
+            fillDefaults(root, sub, value[key]);
+        }
+    }
+}
+
+void checkFinite(const json& value, const std::string& pointer, const std::string& file,
+                 std::vector<InputIssue>& issues) {
+    if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+        issues.push_back({file, pointer, "is not a finite number", "a finite value"});
+    } else if (value.is_object()) {
+        for (const auto& [key, sub] : value.items()) {
+            checkFinite(sub, pointer + "/" + escapePointerToken(key), file, issues);
+        }
+    } else if (value.is_array()) {
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            checkFinite(value[i], pointer + "/" + std::to_string(i), file, issues);
+        }
+    }
+}
+} // namespace
+
+json withSchemaDefaults(const json& document, const std::string& schemaName) {
+    json resolved = document;
+    const json& root = schema(schemaName);
+    fillDefaults(root, &root, resolved);
+    return resolved;
+}
+
+void requireFiniteNumbers(const json& document, const std::string& file) {
+    std::vector<InputIssue> issues;
+    checkFinite(document, "", file, issues);
+    if (!issues.empty()) {
+        throw InputError(std::move(issues));
+    }
+}
+
+} // namespace hvi::io
