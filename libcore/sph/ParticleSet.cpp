@@ -1,0 +1,65 @@
+#include "sph/ParticleSet.hpp"
+
+#include <algorithm>
+
+namespace hvi::sph {
+
+void ParticleSet::add(double zMm, double rMm, double vzKmS, double vrKmS, double massMg,
+                      double hMm, double rhoGcc, double eMJkg, int32_t bodyIndex) {
+    z.push_back(zMm);
+    r.push_back(rMm);
+    vz.push_back(vzKmS);
+    vr.push_back(vrKmS);
+    mass.push_back(massMg);
+    h.push_back(hMm);
+    rho.push_back(rhoGcc);
+    e.push_back(eMJkg);
+    p.push_back(0.0);
+    cs.push_back(0.0);
+    body.push_back(bodyIndex);
+    alive.push_back(1);
+    if (hasStrength()) {
+        szz.push_back(0.0);
+        srr.push_back(0.0);
+        srz.push_back(0.0);
+        plasticStrain.push_back(0.0);
+        damage.push_back(0.0);
+    }
+}
+
+void ParticleSet::enableStrength() {
+    const std::size_t n = size();
+    szz.assign(n, 0.0);
+    srr.assign(n, 0.0);
+    srz.assign(n, 0.0);
+    plasticStrain.assign(n, 0.0);
+    damage.assign(n, 0.0);
+}
+
+void ParticleRates::resize(std::size_t n, bool withStrength) {
+    az.resize(n);
+    ar.resize(n);
+    drho.resize(n);
+    de.resize(n);
+    dh.resize(n);
+    strainRate.resize(n);
+    dvzDz.resize(n);
+    dvzDr.resize(n);
+    dvrDz.resize(n);
+    dvrDr.resize(n);
+    hoopRate.resize(n);
+    if (withStrength) {
+        dszz.resize(n);
+        dsrr.resize(n);
+        dsrz.resize(n);
+    }
+}
+
+void ParticleRates::zero() {
+    for (auto* v : {&az, &ar, &drho, &de, &dh, &dszz, &dsrr, &dsrz, &strainRate, &dvzDz, &dvzDr, &dvrDz,
+                   &dvrDr, &hoopRate}) {
+        std::fill(v->begin(), v->end(), 0.0);
+    }
+}
+
+} // namespace hvi::sph

@@ -1,0 +1,189 @@
+#include "sph/SphHydro.hpp"
+
+#include "core/Units.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <omp.h>
+
+namespace hvi::sph {
+
+namespace {
+
+struct StepVote {
+    double dt = std::numeric_limits<double>::infinity();
+    int32_t particle = -1;
+};
+
+template <class Kern>
+void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const HydroOptions& opt,
+                   const std::vector<double>& bzz, const std::vector<double>& brr,
+                   const std::vector<double>& brz, ParticleRates& rates, StepVote& vote) {
+    const bool axi = opt.axisymmetric;
+    const bool strength = ps.hasStrength();
+    const double alpha = opt.avAlpha, beta = opt.avBeta, eta2 = opt.avEta2;
+    const double inv2Pi = 1.0 / (2.0 * units::kPi);
+    const double invPi = 1.0 / units::kPi;
+    const std::size_t activeCount = list.active.size();
+    const auto* src = list.source.data();
+    const auto* sgn = list.sign.data();
+    const auto* nb = list.neighbours.data();
+
+    // Thread-local vote, combined in a fixed order afterwards (min is order-independent,
+    // ties broken by the lowest particle index, so the result is thread-count independent).
+    std::vector<StepVote> threadVotes(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel
+    {
+        StepVote local;
+#pragma omp for schedule(static)
+        for (std::size_t a = 0; a < activeCount; ++a) {
+            const int32_t i = list.active[a];
+            const double zi = ps.z[i], ri = ps.r[i], hi = ps.h[i];
+            const double vzi = ps.vz[i], vri = ps.vr[i];
+            const double rhoi = ps.rho[i], ci = ps.cs[i];
+            const double bzzi = bzz[i], brri = brr[i], brzi = brz[i];
+            double az = 0.0, ar = 0.0, de = 0.0;
+            double lzz = 0.0, lzr = 0.0, lrz = 0.0, lrr = 0.0;
+            double mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0;
+            double gz = 0.0, gr = 0.0;
+            double maxMu = 0.0;
+            for (int64_t k = list.offset[a]; k < list.offset[a + 1]; ++k) {
+                const int32_t j = nb[k];
+                const int32_t s = src[j];
+                const double sg = sgn[j];
+                const double dz = zi - ps.z[s];
+                const double dr = ri - sg * ps.r[s];
+                const double hij = 0.5 * (hi + ps.h[s]);
+                const double dist2 = dz * dz + dr * dr;
+                const double q = std::sqrt(dist2) / hij;
+                const double gor = Kern::gradOverR(q, hij);
+                const double wz = gor * dz, wr = gor * dr; // grad_i W_ij
+                const double mj = ps.mass[s];
+                const double rj = ps.r[s];
+                const double areaMass = axi ? mj * inv2Pi / rj : mj;
+                const double w = axi ? mj * invPi / (ri + rj) : mj;
+                const double vzj = ps.vz[s], vrj = sg * ps.vr[s];
+                const double dvz = vzi - vzj, dvr = vri - vrj;
+                // Artificial viscosity for approaching pairs.
+                double visc = 0.0;
+                const double dot = dvz * dz + dvr * dr;
+                if (dot < 0.0) {
+                    const double mu = hij * dot / (dist2 + eta2 * hij * hij);
+                    const double cbar = 0.5 * (ci + ps.cs[s]);
+                    const double rhobar = 0.5 * (rhoi + ps.rho[s]);
+                    visc = (-alpha * cbar * mu + beta * mu * mu) / rhobar;
+                    maxMu = std::max(maxMu, -mu);
+                }
+                const double tzz = bzzi + bzz[s] - visc;
+                const double trr = brri + brr[s] - visc;
+                const double trz = brzi + sg * brz[s];
+                az += w * (tzz * wz + trz * wr);
+                ar += w * (trz * wz + trr * wr);
+                de -= w * (dvz * ((bzzi - 0.5 * visc) * wz + brzi * wr) +
+                           dvr * (brzi * wz + (brri - 0.5 * visc) * wr));
+                // Velocity gradient and its linear correction matrix.
+                const double vol = areaMass / ps.rho[s];
+                lzz -= vol * dvz * wz;
+                lzr -= vol * dvz * wr;
+                lrz -= vol * dvr * wz;
+                lrr -= vol * dvr * wr;
+                mzz -= vol * dz * wz;
+                mzr -= vol * dz * wr;
+                mrz -= vol * dr * wz;
+                mrr -= vol * dr * wr;
+                if (axi) {
+                    gz += (w - areaMass) * wz;
+                    gr += (w - areaMass) * wr;
+                }
+            }
+            // Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
+            // otherwise the raw estimate (an isolated particle or a lone pair).
+            const double det = mzz * mrr - mzr * mrz;
+            if (std::fabs(det) > 0.01) {
+                const double izz = mrr / det, izr = -mzr / det, irz = -mrz / det,
+                             irr = mzz / det;
+                const double czz = lzz * izz + lzr * irz, czr = lzz * izr + lzr * irr;
+                const double crz = lrz * izz + lrr * irz, crr = lrz * izr + lrr * irr;
+                lzz = czz;
+                lzr = czr;
+                lrz = crz;
+                lrr = crr;
+            }
+            double hoopRate = 0.0;
+            if (axi) {
+                const double grr = 2.0 * gr / rhoi;
+                hoopRate = vri * grr;
+                const double sThTh = strength ? -(ps.szz[i] + ps.srr[i]) : 0.0;
+                const double sigmaThTh = sThTh - ps.p[i];
+                const double hoop = -(sigmaThTh / rhoi) * grr;
+                ar += hoop;
+                de -= vri * hoop;
+            }
+            rates.az[i] += az;
+            rates.ar[i] += ar;
+            rates.de[i] += de;
+            const double divergence = lzz + lrr;
+            rates.drho[i] += -rhoi * (divergence + hoopRate);
+            rates.dh[i] += 0.5 * hi * divergence;
+            rates.dvzDz[i] = lzz;
+            rates.dvzDr[i] = lzr;
+            rates.dvrDz[i] = lrz;
+            rates.dvrDr[i] = lrr;
+            rates.hoopRate[i] = hoopRate;
+            // Equivalent strain rate sqrt(2/3 e':e') of the deviatoric strain rate.
+            const double mean = (lzz + lrr + hoopRate) / 3.0;
+            const double ezz = lzz - mean, err = lrr - mean, ett = hoopRate - mean;
+            const double ezr = 0.5 * (lzr + lrz);
+            rates.strainRate[i] =
+                std::sqrt((2.0 / 3.0) * (ezz * ezz + err * err + ett * ett + 2.0 * ezr * ezr));
+            // Time-step vote.
+            const double signal = ci + 1.2 * (alpha * ci + beta * maxMu);
+            double dtI = signal > 0.0 ? hi / signal : std::numeric_limits<double>::infinity();
+            const double acc = std::sqrt(az * az + ar * ar);
+            if (acc > 0.0) {
+                dtI = std::min(dtI, std::sqrt(hi / acc));
+            }
+            if (dtI < local.dt || (dtI == local.dt && i < local.particle)) {
+                local.dt = dtI;
+                local.particle = i;
+            }
+        }
+        threadVotes[static_cast<std::size_t>(omp_get_thread_num())] = local;
+    }
+    for (const auto& v : threadVotes) {
+        if (v.particle >= 0 &&
+            (v.dt < vote.dt || (v.dt == vote.dt && v.particle < vote.particle))) {
+            vote = v;
+        }
+    }
+}
+
+} // namespace
+
+void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list,
+                        ParticleRates& rates) {
+    const std::size_t n = ps.size();
+    m_bzz.resize(n);
+    m_brr.resize(n);
+    m_brz.resize(n);
+    const bool strength = ps.hasStrength();
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+        const double inv = 1.0 / (ps.rho[i] * ps.rho[i]);
+        const double szz = strength ? ps.szz[i] : 0.0;
+        const double srr = strength ? ps.srr[i] : 0.0;
+        const double srz = strength ? ps.srz[i] : 0.0;
+        m_bzz[i] = (szz - ps.p[i]) * inv;
+        m_brr[i] = (srr - ps.p[i]) * inv;
+        m_brz[i] = srz * inv;
+    }
+    StepVote vote;
+    withKernel(m_options.kernel, [&](auto kernel) {
+        evaluatePairs<decltype(kernel)>(ps, list, m_options, m_bzz, m_brr, m_brz, rates, vote);
+    });
+    m_stableDt = vote.dt;
+    m_limitingParticle = vote.particle;
+}
+
+} // namespace hvi::sph
