@@ -1,0 +1,129 @@
+#include "solver/MaterialPackage.hpp"
+
+#include "material/strength/JaumannRate.hpp"
+#include "material/strength/RadialReturn.hpp"
+
+#include <cmath>
+#include <variant>
+
+namespace hvi::solver {
+
+using material::StressDeviator;
+
+void MaterialPackage::updatePressure(sph::ParticleSet& ps) const {
+    const bool hasS = ps.hasStrength();
+    for (const auto& body : m_bodies) {
+        const double shear = body.strength ? body.spec->shearModulus : 0.0;
+        std::visit(
+            [&](const auto& eos) {
+                const auto first = static_cast<std::ptrdiff_t>(body.first);
+                const auto last = static_cast<std::ptrdiff_t>(body.first + body.count);
+#pragma omp parallel for schedule(static)
+                for (std::ptrdiff_t k = first; k < last; ++k) {
+                    const auto i = static_cast<std::size_t>(k);
+                    if (!ps.alive[i]) {
+                        continue;
+                    }
+                    const double rho = std::max(ps.rho[i], body.minDensity);
+                    const material::EosState st = eos.evaluate(rho, ps.e[i]);
+                    double p = st.pressure;
+                    double c2 = st.soundSpeedSquared;
+                    const bool failed = hasS && ps.damage[i] >= 1.0;
+                    if (ps.rho[i] < body.minDensity) {
+                        p = 0.0; // an expanded, fragmented particle carries no stress
+                    } else if (failed && p < 0.0) {
+                        p = 0.0; // failed material takes no tension
+                    }
+                    if (shear > 0.0 && !failed) {
+                        c2 += (4.0 / 3.0) * shear / rho;
+                    }
+                    ps.p[i] = p;
+                    ps.cs[i] = std::sqrt(std::max(c2, 0.0));
+                }
+            },
+            body.spec->eos);
+    }
+}
+
+void MaterialPackage::addStressRates(const sph::ParticleSet& ps,
+                                     const std::vector<int32_t>& active,
+                                     sph::ParticleRates& rates) const {
+    if (!ps.hasStrength()) {
+        return;
+    }
+    const std::size_t count = active.size();
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < count; ++a) {
+        const int32_t i = active[a];
+        const BodyMaterial& body = m_bodies[static_cast<std::size_t>(ps.body[i])];
+        if (!body.strength || ps.damage[i] >= 1.0 || ps.rho[i] < body.minDensity) {
+            rates.dszz[i] = rates.dsrr[i] = rates.dsrz[i] = 0.0;
+            continue;
+        }
+        const StressDeviator s{ps.szz[i], ps.srr[i], ps.srz[i]};
+        const material::VelocityGradient2D l{rates.dvzDz[i], rates.dvzDr[i], rates.dvrDz[i],
+                                             rates.dvrDr[i]};
+        const StressDeviator ds =
+            material::jaumannRate(s, l, rates.hoopRate[i], body.spec->shearModulus);
+        rates.dszz[i] = ds.zz;
+        rates.dsrr[i] = ds.rr;
+        rates.dsrz[i] = ds.rz;
+    }
+}
+
+void MaterialPackage::applyPlasticity(sph::ParticleSet& ps, const sph::ParticleRates& rates,
+                                      const std::vector<int32_t>& active) const {
+    if (!ps.hasStrength()) {
+        return;
+    }
+    const std::size_t count = active.size();
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < count; ++a) {
+        const int32_t i = active[a];
+        const BodyMaterial& body = m_bodies[static_cast<std::size_t>(ps.body[i])];
+        if (!body.strength) {
+            continue;
+        }
+        StressDeviator s{ps.szz[i], ps.srr[i], ps.srz[i]};
+        if (ps.damage[i] >= 1.0 || ps.rho[i] < body.minDensity) {
+            s = StressDeviator{};
+        } else {
+            const material::MaterialSpec& spec = *body.spec;
+            const double tStar =
+                spec.thermal ? spec.thermal->homologousFromEnergy(ps.e[i]) : 0.0;
+            const double rate = rates.strainRate[i];
+            const double yield = std::visit(
+                [&](const auto& model) -> double {
+                    using M = std::decay_t<decltype(model)>;
+                    if constexpr (std::is_same_v<M, material::NoStrength>) {
+                        return 0.0;
+                    } else {
+                        return model.flowStress(ps.plasticStrain[i], rate, tStar);
+                    }
+                },
+                spec.strength);
+            const double dEps = material::radialReturn(s, yield, spec.shearModulus);
+            ps.plasticStrain[i] += dEps;
+            if (dEps > 0.0) {
+                std::visit(
+                    [&](const auto& model) {
+                        using F = std::decay_t<decltype(model)>;
+                        if constexpr (!std::is_same_v<F, material::NoFailure>) {
+                            const double triax = model.triaxiality(ps.p[i], s.vonMises());
+                            const double epsF = model.failureStrain(triax, rate, tStar);
+                            ps.damage[i] = F::accumulate(ps.damage[i], dEps, epsF);
+                        }
+                    },
+                    spec.failure);
+            }
+            if (ps.damage[i] >= 1.0) {
+                s = StressDeviator{};
+            }
+        }
+        ps.szz[i] = s.zz;
+        ps.srr[i] = s.rr;
+        ps.srz[i] = s.rz;
+    }
+}
+
+} // namespace hvi::solver
