@@ -23,7 +23,7 @@
 //   t = 1.155^(-3/2) d^(3/2) K3D rho_p^(1/2) rho_b^(1/6) S^(-1/2) V cos^(3 delta/2) (70/s)^(1/2).
 //
 // Known misprints / caveats:
-//  - BLAP09 prints 0.8056 for 1.155^(-3/2) = 0.80563; we use the exact value so sizing and
+//  - BLAP09 prints 0.8056 for 1.155^(-3/2) = 0.805614; we use the exact value so sizing and
 //    performance invert each other exactly.
 //  - The delta rule makes d_c jump at 45 and 65 deg: that is the published equation.
 //  - With K3S = 1, K3D = 0.16, delta = 5/3 the equation is said to reduce to the JSC

@@ -1,8 +1,7 @@
 // SRL honeycomb sandwich BLE (BLAP09 eqs 56-60), its sizing form (eq 57), the reduction to
 // the JSC Whipple equation, and the HB09 6-1 rough rule.
-#include "ble/HoneycombSandwich.hpp"
-
 #include "Tolerance.hpp"
+#include "ble/HoneycombSandwich.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -13,8 +12,12 @@ using hvi::test::near;
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 // 0.5 mm Al facesheets on a 25 mm core, 40 ksi rear facesheet, 6.35 mm cells.
-HoneycombSandwichPanel panel() { return {0.05, 2.7, 0.05, 40.0, 2.5, 0.635}; }
-Threat threatAt(double v, double angleDeg = 0.0) { return {0.0, 2.7, v, angleDeg}; }
+HoneycombSandwichPanel panel() {
+    return {0.05, 2.7, 0.05, 40.0, 2.5, 0.635};
+}
+Threat threatAt(double v, double angleDeg = 0.0) {
+    return {0.0, 2.7, v, angleDeg};
+}
 } // namespace
 
 TEST(SrlHoneycomb, HandValuesAluminiumFacesheets) {
@@ -41,11 +44,10 @@ TEST(SrlHoneycomb, ObliquityExponentRule) {
     // The exponent reaches the result: at 50 deg, hypervelocity, d_c scales as cos^(-5/4).
     const double c = std::cos(50.0 * kPi / 180.0);
     const double v = 12.0;
-    EXPECT_TRUE(near("cos^(-5/4) at 50 deg",
-                     srlCriticalDiameter(panel(), threatAt(v, 50.0)).criticalDiameterCm,
-                     srlCriticalDiameter(panel(), threatAt(v)).criticalDiameterCm *
-                         std::pow(c, -1.25),
-                     0.0, 1e-12));
+    EXPECT_TRUE(near(
+        "cos^(-5/4) at 50 deg", srlCriticalDiameter(panel(), threatAt(v, 50.0)).criticalDiameterCm,
+        srlCriticalDiameter(panel(), threatAt(v)).criticalDiameterCm * std::pow(c, -1.25), 0.0,
+        1e-12));
 }
 
 TEST(SrlHoneycomb, ContinuousAtThreeAndSevenKmS) {
@@ -70,10 +72,10 @@ TEST(SrlHoneycomb, ReducesToJscWhippleOracle) {
     const SrlParameters jsc{3.0, 7.0, 1.0, 0.16, 5.0 / 3.0};
     const double tb = 0.1, tw = 0.2, sigma = 40.0, S = 10.0, rho = 2.7;
     const auto c93Low = [&](double v, double c) {
-        return std::pow((tw * std::sqrt(sigma / 40.0) + tb) /
-                            (0.6 * std::pow(c, 5.0 / 3.0) * std::sqrt(rho) *
-                             std::pow(v, 2.0 / 3.0)),
-                        18.0 / 19.0);
+        return std::pow(
+            (tw * std::sqrt(sigma / 40.0) + tb) /
+                (0.6 * std::pow(c, 5.0 / 3.0) * std::sqrt(rho) * std::pow(v, 2.0 / 3.0)),
+            18.0 / 19.0);
     };
     const auto c93High = [&](double vn) {
         return 3.918 * std::pow(tw, 2.0 / 3.0) * std::pow(rho, -1.0 / 3.0) *
@@ -103,7 +105,8 @@ TEST(SrlHoneycomb, ReducesToJscWhippleOracle) {
     // Hypervelocity branch at 45 deg: SRL has V^(-2/3) cos^(-5/3), C93 (V cos)^(-2/3), so the
     // reduction does not hold at oblique incidence; the ratio is 1/cos (x 3.91894/3.918).
     const double c45 = std::cos(45.0 * kPi / 180.0);
-    const double srl45 = srlCriticalDiameter(asWhipple, threatAt(12.0, 45.0), jsc).criticalDiameterCm;
+    const double srl45 =
+        srlCriticalDiameter(asWhipple, threatAt(12.0, 45.0), jsc).criticalDiameterCm;
     EXPECT_TRUE(near("SRL/Whipple HV at 45 deg", srl45 / c93High(12.0 * c45),
                      (1.155 / std::pow(0.16, 2.0 / 3.0) / 3.918) / c45, 0.0, 1e-12));
 }

@@ -1,8 +1,7 @@
 // Cour-Palais single-wall equations (HB09 4-1..4-6): hand values for both density-ratio
 // branches, the k factors, and design/performance inversion, plus the printed 4-6 oracle.
-#include "ble/SingleWall.hpp"
-
 #include "Tolerance.hpp"
+#include "ble/SingleWall.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -12,7 +11,9 @@ using hvi::test::near;
 
 namespace {
 // Al 6061-T6, BLAP09 Table 1: rho 2.70, BHN 95, C 5.05 km/s.
-SingleWallTarget al6061(double thicknessCm = 0.0) { return {thicknessCm, 2.7, 95.0, 5.05}; }
+SingleWallTarget al6061(double thicknessCm = 0.0) {
+    return {thicknessCm, 2.7, 95.0, 5.05};
+}
 } // namespace
 
 TEST(SingleWall, PenetrationAlOnAlHandValue) {
@@ -37,8 +38,8 @@ TEST(SingleWall, PenetrationDenseProjectileUsesTwoThirds) {
 TEST(SingleWall, ThicknessFactors) {
     const Threat t{0.1, 2.7, 7.0, 0.0};
     const double p = semiInfinitePenetrationCm(t, al6061());
-    EXPECT_TRUE(near("perforation", singleWallRequiredThicknessCm(t, al6061(),
-                                                                  SingleWallFailure::Perforation),
+    EXPECT_TRUE(near("perforation",
+                     singleWallRequiredThicknessCm(t, al6061(), SingleWallFailure::Perforation),
                      1.8 * p, 0.0, 1e-14));
     EXPECT_TRUE(near("detached spall",
                      singleWallRequiredThicknessCm(t, al6061(), SingleWallFailure::DetachedSpall),

@@ -1,9 +1,8 @@
 // Stuffed Whipple (HB09 4-45..4-50): hand values, K_H by stuffing fraction, continuity at
 // the regime bounds, the printed K_Li/K_Hi intermediate form as an oracle, and the design
 // equations (hand values, and design -> performance round trip).
-#include "ble/StuffedWhipple.hpp"
-
 #include "Tolerance.hpp"
+#include "ble/StuffedWhipple.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -23,7 +22,9 @@ StuffedWhippleShield shield() {
     s.standoffCm = 11.4;
     return s;
 }
-Threat threatAt(double v, double angleDeg = 0.0) { return {0.0, 2.7, v, angleDeg}; }
+Threat threatAt(double v, double angleDeg = 0.0) {
+    return {0.0, 2.7, v, angleDeg};
+}
 } // namespace
 
 TEST(StuffedWhipple, HandValues) {
@@ -76,11 +77,14 @@ TEST(StuffedWhipple, ContinuousAtRegimeBounds) {
     // Bounds V_LV = 2.6 cos^-0.5 and V_HV = 6.5 cos^-0.75 (HB09 4-47/4-48); 1e-9 as elsewhere.
     for (double angle : {0.0, 30.0, 70.0}) {
         const double c = std::cos(angle * kPi / 180.0);
-        for (double vb : {2.6 / std::sqrt(c), 6.5 / std::pow(c, 0.75)}) {
-            const double left = stuffedWhippleCriticalDiameter(shield(), threatAt(vb * (1 - 1e-12), angle))
-                                    .criticalDiameterCm;
-            const double right = stuffedWhippleCriticalDiameter(shield(), threatAt(vb * (1 + 1e-12), angle))
-                                     .criticalDiameterCm;
+        // Also at V_n = 3 and 7 km/s, the Whipple bounds, which must not be regime bounds here.
+        for (double vb : {2.6 / std::sqrt(c), 6.5 / std::pow(c, 0.75), 3.0 / c, 7.0 / c}) {
+            const double left =
+                stuffedWhippleCriticalDiameter(shield(), threatAt(vb * (1 - 1e-12), angle))
+                    .criticalDiameterCm;
+            const double right =
+                stuffedWhippleCriticalDiameter(shield(), threatAt(vb * (1 + 1e-12), angle))
+                    .criticalDiameterCm;
             EXPECT_TRUE(near("SW continuity", left, right, 0.0, 1e-9));
         }
     }
@@ -121,14 +125,14 @@ TEST(StuffedWhipple, DesignHandValues) {
     EXPECT_TRUE(near("t_w", d.rearWallCm, 0.03116372, 0.0, 1e-6));
     EXPECT_TRUE(d.warnings.empty());
     // A bumper+stuffing half as heavy needs 2^1.1 times the rear wall.
-    EXPECT_TRUE(near("lighter bumper",
-                     stuffedWhippleRearWallCm(threat, 0.5 * 0.2025, 0.5 * 0.3105,
-                                              {2.7, 2.7, 40.0, 11.4}),
-                     d.rearWallCm * std::pow(2.0, 1.1), 0.0, 1e-12));
+    EXPECT_TRUE(
+        near("lighter bumper",
+             stuffedWhippleRearWallCm(threat, 0.5 * 0.2025, 0.5 * 0.3105, {2.7, 2.7, 40.0, 11.4}),
+             d.rearWallCm * std::pow(2.0, 1.1), 0.0, 1e-12));
     // Below the hypervelocity branch the design equations are extrapolated.
-    EXPECT_TRUE(hasWarning(designStuffedWhipple({0.5, 2.7, 6.0, 0.0}, {2.7, 2.7, 40.0, 11.4})
-                               .warnings,
-                           "design_below_hypervelocity_regime"));
+    EXPECT_TRUE(
+        hasWarning(designStuffedWhipple({0.5, 2.7, 6.0, 0.0}, {2.7, 2.7, 40.0, 11.4}).warnings,
+                   "design_below_hypervelocity_regime"));
 }
 
 TEST(StuffedWhipple, DesignRoundTripsThroughPerformance) {

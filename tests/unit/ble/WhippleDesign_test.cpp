@@ -1,10 +1,9 @@
 // Whipple design equations HB09 4-21, 4-22 (C93 eqs 7-8): the reference golden rear wall,
 // the c_b switch, M_p as sphere mass, the thesis' inverted yield ratio, design->performance
 // consistency, and warnings.
-#include "ble/WhippleDesign.hpp"
-
-#include "ble/WhippleNno.hpp"
 #include "Tolerance.hpp"
+#include "ble/WhippleDesign.hpp"
+#include "ble/WhippleNno.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -35,39 +34,38 @@ TEST(WhippleDesign, SphereMassInGrams) {
 }
 
 TEST(WhippleDesign, BumperCoefficientSwitchesAtThirty) {
-    EXPECT_DOUBLE_EQ(whippleBumperCoefficient(5.08, 0.36), 0.25);   // S/d = 14.1
-    EXPECT_DOUBLE_EQ(whippleBumperCoefficient(2.99, 0.1), 0.25);    // S/d = 29.9
-    EXPECT_DOUBLE_EQ(whippleBumperCoefficient(3.0, 0.1), 0.20);     // S/d = 30
-    EXPECT_DOUBLE_EQ(whippleBumperCoefficient(10.0, 0.1), 0.20);    // S/d = 100
+    EXPECT_DOUBLE_EQ(whippleBumperCoefficient(5.08, 0.36), 0.25); // S/d = 14.1
+    EXPECT_DOUBLE_EQ(whippleBumperCoefficient(2.99, 0.1), 0.25);  // S/d = 29.9
+    EXPECT_DOUBLE_EQ(whippleBumperCoefficient(3.0, 0.1), 0.20);   // S/d = 30
+    EXPECT_DOUBLE_EQ(whippleBumperCoefficient(10.0, 0.1), 0.20);  // S/d = 100
     // t_b = c_b d rho_p / rho_b with m_p the areal density d rho_p: HITF04151 -> 0.25 * 0.36 =
     // 0.09 cm of Al (thesis Table V: 0.9 mm); a 2.8 g/cm^3 bumper is thinner by 2.7/2.8.
     EXPECT_TRUE(near("t_b Al", whippleDesignBumperCm(kHitf04151, 2.7, 5.08), 0.09, 0.0, 1e-12));
-    EXPECT_TRUE(near("t_b 2.8", whippleDesignBumperCm(kHitf04151, 2.8, 5.08), 0.09 * 2.7 / 2.8,
-                     0.0, 1e-12));
-    EXPECT_TRUE(near("t_b S/d>=30", whippleDesignBumperCm(kHitf04151, 2.7, 12.0), 0.072, 0.0,
+    EXPECT_TRUE(near("t_b 2.8", whippleDesignBumperCm(kHitf04151, 2.8, 5.08), 0.09 * 2.7 / 2.8, 0.0,
                      1e-12));
+    EXPECT_TRUE(
+        near("t_b S/d>=30", whippleDesignBumperCm(kHitf04151, 2.7, 12.0), 0.072, 0.0, 1e-12));
 }
 
 TEST(WhippleDesign, ThesisInvertedConventionScalesBySigmaOver70) {
     // (s/70)^0.5 instead of (70/s)^0.5: the ratio of the two is s/70 = 40/70. The thesis'
     // Table V prints 1.22 mm for this row (reference section 9.3).
     const double handbook = whippleDesignRearWallCm(kHitf04151, 2.7, 40.0, 5.08);
-    const double thesis = whippleDesignRearWallCm(kHitf04151, 2.7, 40.0, 5.08,
-                                                  YieldRatioConvention::ThesisInverted);
+    const double thesis =
+        whippleDesignRearWallCm(kHitf04151, 2.7, 40.0, 5.08, YieldRatioConvention::ThesisInverted);
     EXPECT_TRUE(near("inverted / handbook", thesis / handbook, 40.0 / 70.0, 0.0, 1e-12));
     EXPECT_TRUE(near("thesis Table V rw", thesis, 0.122, 0.0005, 0.0)); // printed to 0.01 mm
     // At 70 ksi the two conventions coincide.
-    EXPECT_TRUE(near("70 ksi",
-                     whippleDesignRearWallCm(kHitf04151, 2.7, 70.0, 5.08,
-                                             YieldRatioConvention::ThesisInverted),
-                     whippleDesignRearWallCm(kHitf04151, 2.7, 70.0, 5.08), 0.0, 1e-12));
+    EXPECT_TRUE(near(
+        "70 ksi",
+        whippleDesignRearWallCm(kHitf04151, 2.7, 70.0, 5.08, YieldRatioConvention::ThesisInverted),
+        whippleDesignRearWallCm(kHitf04151, 2.7, 70.0, 5.08), 0.0, 1e-12));
 }
 
 TEST(WhippleDesign, ObliqueUsesNormalVelocity) {
     Threat oblique = kHitf04151;
     oblique.angleDeg = 60.0;
-    EXPECT_TRUE(near("t_w at 60 deg",
-                     whippleDesignRearWallCm(oblique, 2.7, 40.0, 5.08),
+    EXPECT_TRUE(near("t_w at 60 deg", whippleDesignRearWallCm(oblique, 2.7, 40.0, 5.08),
                      0.5 * whippleDesignRearWallCm(kHitf04151, 2.7, 40.0, 5.08), 0.0, 1e-12));
 }
 

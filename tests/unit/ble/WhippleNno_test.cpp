@@ -1,9 +1,8 @@
 // NNO Whipple performance equation (C93 eqs 9-12 = HB09 4-23..4-26): hand values in each
 // regime, continuity at the regime bounds, the printed-constant variant, the 65 deg cap,
 // an independent oracle of the hypervelocity branch, and the validity warnings.
-#include "ble/WhippleNno.hpp"
-
 #include "Tolerance.hpp"
+#include "ble/WhippleNno.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -14,7 +13,9 @@ using hvi::test::near;
 
 namespace {
 // An Al 6061-T6 Whipple shield: 1 mm bumper, 2 mm rear wall, 10 cm standoff.
-WhippleShield referenceShield() { return {0.1, 2.7, 0.2, 40.0, 10.0}; }
+WhippleShield referenceShield() {
+    return {0.1, 2.7, 0.2, 40.0, 10.0};
+}
 Threat threatAt(double velocityKmS, double angleDeg = 0.0, double diameterCm = 0.0) {
     return {diameterCm, 2.7, velocityKmS, angleDeg};
 }
@@ -73,9 +74,9 @@ TEST(WhippleNno, ContinuousAtThreeAndSevenKmS) {
             const double v = vn / c;
             const double left = dcAt(s, v * (1.0 - 1e-12), angle);
             const double right = dcAt(s, v * (1.0 + 1e-12), angle);
-            EXPECT_TRUE(near("continuity at V_n=" + std::to_string(vn) + ", angle " +
-                                 std::to_string(angle),
-                             left, right, 0.0, 1e-9));
+            EXPECT_TRUE(
+                near("continuity at V_n=" + std::to_string(vn) + ", angle " + std::to_string(angle),
+                     left, right, 0.0, 1e-9));
         }
     }
 }
@@ -85,13 +86,12 @@ TEST(WhippleNno, PrintedConstantsOracle) {
     //   [(t_w (s/40)^0.5 + t_b) / (1.248 rho_p^0.5)]^(18/19) (1.75 - 5/4)
     //   + 1.071 t_w^(2/3) rho_p^(-1/3) rho_b^(-1/9) S^(1/3) (s/70)^(1/3) (5/4 - 0.75)
     const WhippleShield s = referenceShield();
-    const double printed =
-        std::pow(0.3 / (1.248 * std::sqrt(2.7)), 18.0 / 19.0) * 0.5 +
-        1.071 * std::pow(0.2, 2.0 / 3.0) * std::pow(2.7, -4.0 / 9.0) * std::cbrt(10.0) *
-            std::cbrt(40.0 / 70.0) * 0.5;
+    const double printed = std::pow(0.3 / (1.248 * std::sqrt(2.7)), 18.0 / 19.0) * 0.5 +
+                           1.071 * std::pow(0.2, 2.0 / 3.0) * std::pow(2.7, -4.0 / 9.0) *
+                               std::cbrt(10.0) * std::cbrt(40.0 / 70.0) * 0.5;
     // The Printed option must reproduce it to round-off.
-    EXPECT_TRUE(near("printed eq 10", dcAt(s, 5.0, 0.0, NnoShatterConstants::Printed), printed,
-                     0.0, 1e-12));
+    EXPECT_TRUE(near("printed eq 10", dcAt(s, 5.0, 0.0, NnoShatterConstants::Printed), printed, 0.0,
+                     1e-12));
     // The continuous default differs from it only by the rounding of the two constants:
     // 1.248 vs 1.24805 and 1.071 vs 1.07069, i.e. at most 3e-4 relative.
     const double continuous = dcAt(s, 5.0);
@@ -114,8 +114,9 @@ TEST(WhippleNno, HypervelocityOracleFromInvertedDesignForm) {
             const double rhoB = 2.7;
             const double S = 5.08;
             const double sigma = 57.0;
-            const double tw = std::pow(d / 3.918, 1.5) * std::sqrt(rhoP) * std::pow(rhoB, 1.0 / 6.0) *
-                              vn / std::sqrt(S) * std::sqrt(70.0 / sigma);
+            const double tw = std::pow(d / 3.918, 1.5) * std::sqrt(rhoP) *
+                              std::pow(rhoB, 1.0 / 6.0) * vn / std::sqrt(S) *
+                              std::sqrt(70.0 / sigma);
             const WhippleShield shield{0.05, rhoB, tw, sigma, S};
             const auto r = whippleNnoCriticalDiameter(shield, {d, rhoP, vn, 0.0});
             EXPECT_EQ(r.regime, Regime::Hypervelocity);
