@@ -70,9 +70,11 @@ const char* massSplitName(MassSplitModel model);
 struct MassSplit {
     MassSplitModel model = MassSplitModel::Even;
     bool feasible = true;
-    std::string infeasibleReason;                ///< empty when feasible
-    double bumperCm = 0.0;                       ///< t_b [cm] (the formula value when infeasible)
-    double rearWallCm = 0.0;                     ///< t_w [cm] (the formula value when infeasible)
+    std::string infeasibleReason; ///< empty when feasible
+    /// t_b and t_w [cm]. When infeasible, the plate the formula sized keeps the formula's
+    /// value (so the caller can report it) and the other plate is 0.
+    double bumperCm = 0.0;
+    double rearWallCm = 0.0;
     CriticalDiameterResult performance;          ///< NNO d_c; meaningful only when feasible
     bool perforated = false;                     ///< d > d_c (P); meaningful only when feasible
     std::vector<ValidityWarning> designWarnings; ///< from the design equation used, if any
