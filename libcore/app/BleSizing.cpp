@@ -1,0 +1,469 @@
+#include "app/BleSizing.hpp"
+
+#include "ble/BleMaterials.hpp"
+#include "core/Error.hpp"
+#include "core/Units.hpp"
+
+#include <cmath>
+#include <functional>
+#include <set>
+#include <stdexcept>
+
+namespace hvi::app {
+
+using nlohmann::json;
+namespace u = units;
+
+namespace {
+
+/// Collects semantic problems so they are all reported together.
+struct Problems {
+    std::string file;
+    std::vector<InputIssue> issues;
+    void add(const std::string& pointer, const std::string& problem, const std::string& expected) {
+        issues.push_back({file, pointer, problem, expected});
+    }
+    void throwIfAny() {
+        if (!issues.empty()) {
+            throw InputError(issues);
+        }
+    }
+};
+
+const ble::BleMaterial* material(const json& block, const char* key, const std::string& ptr,
+                                 Problems& problems) {
+    const std::string name = block.value(key, "Al6061-T6");
+    const ble::BleMaterial* m = ble::findBleMaterial(name);
+    if (!m) {
+        std::string known;
+        for (const auto& n : ble::bleMaterialNames()) {
+            known += (known.empty() ? "" : ", ") + n;
+        }
+        problems.add(ptr + "/" + key, "unknown material '" + name + "'", "one of: " + known);
+    }
+    return m;
+}
+
+/// Rear-wall yield in ksi: an explicit override (ksi or MPa, not both) or the material's.
+double rearWallYieldKsi(const json& shield, const ble::BleMaterial* m, const std::string& matKey,
+                        Problems& problems) {
+    const bool ksi = shield.contains("rear_wall_yield_ksi");
+    const bool mpa = shield.contains("rear_wall_yield_MPa");
+    if (ksi && mpa) {
+        problems.add("/shield/rear_wall_yield_MPa", "both rear_wall_yield_ksi and _MPa given",
+                     "one of them");
+        return 40.0;
+    }
+    if (ksi) {
+        return shield.at("rear_wall_yield_ksi");
+    }
+    if (mpa) {
+        return u::mpaToKsi(shield.at("rear_wall_yield_MPa").get<double>());
+    }
+    if (m && !m->yieldKsi) {
+        problems.add("/shield/" + matKey, "material '" + m->name + "' has no yield stress",
+                     "a structural alloy, or rear_wall_yield_ksi / _MPa");
+        return 40.0;
+    }
+    return m ? *m->yieldKsi : 40.0;
+}
+
+/// (front, rear) facesheet thickness [mm] from facesheet_mm or front_/rear_facesheet_mm.
+std::pair<double, double> facesheets(const json& shield, Problems& problems) {
+    const bool both = shield.contains("facesheet_mm");
+    const bool front = shield.contains("front_facesheet_mm");
+    const bool rear = shield.contains("rear_facesheet_mm");
+    if (both && (front || rear)) {
+        problems.add("/shield/facesheet_mm", "facesheet_mm given together with front_/rear_",
+                     "either facesheet_mm or both front_facesheet_mm and rear_facesheet_mm");
+        return {1.0, 1.0};
+    }
+    if (both) {
+        const double t = shield.at("facesheet_mm");
+        return {t, t};
+    }
+    if (!front || !rear) {
+        problems.add(front ? "/shield/rear_facesheet_mm" : "/shield/front_facesheet_mm",
+                     "required key is missing",
+                     "facesheet thickness [mm] (or facesheet_mm for both)");
+        return {1.0, 1.0};
+    }
+    return {shield.at("front_facesheet_mm"), shield.at("rear_facesheet_mm")};
+}
+
+double requireMm(const json& shield, const char* key, const std::string& mode, Problems& problems) {
+    if (!shield.contains(key)) {
+        problems.add(std::string("/shield/") + key, "required key is missing in " + mode + " mode",
+                     "thickness [mm], > 0");
+        return 1.0;
+    }
+    return shield.at(key);
+}
+
+std::string verdictOf(double diameterCm, double criticalCm) {
+    return diameterCm > criticalCm ? "P" : "NP";
+}
+
+json warningsJson(const std::vector<ble::ValidityWarning>& warnings) {
+    json out = json::array();
+    for (const auto& w : warnings) {
+        out.push_back({{"code", w.code}, {"message", w.message}});
+    }
+    return out;
+}
+
+json performanceJson(const std::string& equation, const ble::CriticalDiameterResult& r,
+                     double diameterCm) {
+    return {{"equation", equation},
+            {"critical_diameter_mm", u::cmToMm(r.criticalDiameterCm)},
+            {"regime", ble::regimeName(r.regime)},
+            {"verdict", verdictOf(diameterCm, r.criticalDiameterCm)},
+            {"critical_over_projectile_diameter", r.criticalDiameterCm / diameterCm}};
+}
+
+void addWarnings(std::vector<ble::ValidityWarning>& into,
+                 const std::vector<ble::ValidityWarning>& from) {
+    for (const auto& w : from) {
+        const bool seen = std::any_of(into.begin(), into.end(), [&](const auto& x) {
+            return x.code == w.code && x.message == w.message;
+        });
+        if (!seen) {
+            into.push_back(w);
+        }
+    }
+}
+
+} // namespace
+
+BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
+    Problems problems{file, {}};
+    BleSizingOutcome out;
+    const json& threatIn = doc.at("threat");
+    const json& shield = doc.at("shield");
+    const json& options = doc.at("options");
+    const std::string mode = doc.at("mode");
+    const bool design = mode == "design";
+    const std::string type = shield.at("type");
+
+    // Threat.
+    const ble::BleMaterial* projectile = material(threatIn, "material", "/threat", problems);
+    ble::Threat threat;
+    threat.diameterCm = u::mmToCm(threatIn.at("diameter_mm").get<double>());
+    threat.velocityKmS = threatIn.at("velocity_km_s");
+    threat.angleDeg = threatIn.at("angle_deg");
+    threat.densityGCm3 = threatIn.contains("density_g_cm3")
+                             ? threatIn.at("density_g_cm3").get<double>()
+                             : (projectile ? projectile->densityGCm3 : 2.7);
+
+    const double vMin = options.at("curve_velocity_min_km_s");
+    const double vMax = options.at("curve_velocity_max_km_s");
+    if (vMax <= vMin) {
+        problems.add("/options/curve_velocity_max_km_s", "not above curve_velocity_min_km_s",
+                     "curve_velocity_max_km_s > curve_velocity_min_km_s");
+    }
+    const double sMinMm = options.at("standoff_min_mm");
+    const double sMaxMm = options.at("standoff_max_mm");
+    if (sMaxMm <= sMinMm) {
+        problems.add("/options/standoff_max_mm", "not above standoff_min_mm",
+                     "standoff_max_mm > standoff_min_mm");
+    }
+    const bool thesisCompat = options.at("thesis_compat");
+    const auto convention = thesisCompat ? ble::YieldRatioConvention::ThesisInverted
+                                         : ble::YieldRatioConvention::Handbook;
+    const auto constants = options.at("nno_constants") == "continuous"
+                               ? ble::NnoShatterConstants::Continuous
+                               : ble::NnoShatterConstants::Printed;
+
+    json sizing;
+    sizing["id"] = doc.at("id");
+    if (doc.contains("description")) {
+        sizing["description"] = doc.at("description");
+    }
+    sizing["mode"] = mode;
+    std::function<ble::CriticalDiameterResult(double)> curveOf;
+    std::vector<ble::ValidityWarning>& warnings = out.warnings;
+
+    if (type == "whipple" || type == "stuffed_whipple") {
+        const ble::BleMaterial* bumper = material(shield, "bumper_material", "/shield", problems);
+        const ble::BleMaterial* wall = material(shield, "rear_wall_material", "/shield", problems);
+        const double yield = rearWallYieldKsi(shield, wall, "rear_wall_material", problems);
+        const double standoffCm = u::mmToCm(shield.at("standoff_mm").get<double>());
+        const double rhoB = bumper ? bumper->densityGCm3 : 2.7;
+        const double rhoW = wall ? wall->densityGCm3 : 2.7;
+        if (type == "whipple") {
+            ble::WhippleShield w{0.0, rhoB, 0.0, yield, standoffCm};
+            if (design) {
+                problems.throwIfAny();
+                const auto d = ble::designWhipple(threat, {rhoB, yield, standoffCm}, convention);
+                addWarnings(warnings, d.warnings);
+                w.bumperCm = d.bumperCm;
+                w.rearWallCm = d.rearWallCm;
+                sizing["design"] = {{"equation", "HB09 4-21, 4-22 (Whipple design)"},
+                                    {"bumper_mm", u::cmToMm(d.bumperCm)},
+                                    {"rear_wall_mm", u::cmToMm(d.rearWallCm)},
+                                    {"bumper_coefficient", d.bumperCoefficient},
+                                    {"yield_ratio_convention",
+                                     thesisCompat ? "thesis_inverted" : "handbook"}};
+            } else {
+                w.bumperCm = u::mmToCm(requireMm(shield, "bumper_mm", mode, problems));
+                w.rearWallCm = u::mmToCm(requireMm(shield, "rear_wall_mm", mode, problems));
+            }
+            problems.throwIfAny();
+            curveOf = [=](double v) {
+                ble::Threat t = threat;
+                t.velocityKmS = v;
+                return ble::whippleNnoCriticalDiameter(w, t, constants);
+            };
+            const auto r = curveOf(threat.velocityKmS);
+            addWarnings(warnings, r.warnings);
+            sizing["performance"] =
+                performanceJson("NASA JSC new non-optimum Whipple (C93 eqs 9-12)", r,
+                                threat.diameterCm);
+            out.curveLabel = "Whipple NNO";
+        } else {
+            ble::StuffedWhippleShield sw;
+            sw.bumperDensityGCm3 = rhoB;
+            sw.rearWallDensityGCm3 = rhoW;
+            sw.rearWallYieldKsi = yield;
+            sw.standoffCm = standoffCm;
+            if (design) {
+                problems.throwIfAny();
+                const auto d = ble::designStuffedWhipple(threat, {rhoB, rhoW, yield, standoffCm});
+                addWarnings(warnings, d.warnings);
+                sw.bumperCm = d.bumperCm;
+                sw.stuffingArealDensityGCm2 = d.stuffingArealDensityGCm2;
+                sw.rearWallCm = d.rearWallCm;
+                sizing["design"] = {{"equation", "HB09 4-45..4-47 (stuffed Whipple design)"},
+                                    {"bumper_mm", u::cmToMm(d.bumperCm)},
+                                    {"blanket_areal_density_g_cm2", d.stuffingArealDensityGCm2},
+                                    {"nextel_areal_density_g_cm2", d.nextelArealDensityGCm2},
+                                    {"kevlar_areal_density_g_cm2", d.kevlarArealDensityGCm2},
+                                    {"rear_wall_mm", u::cmToMm(d.rearWallCm)}};
+            } else {
+                sw.bumperCm = u::mmToCm(requireMm(shield, "bumper_mm", mode, problems));
+                sw.rearWallCm = u::mmToCm(requireMm(shield, "rear_wall_mm", mode, problems));
+                if (!shield.contains("blanket_areal_density_g_cm2")) {
+                    problems.add("/shield/blanket_areal_density_g_cm2",
+                                 "required key is missing in performance mode",
+                                 "Nextel + Kevlar areal density [g/cm^2], > 0");
+                } else {
+                    sw.stuffingArealDensityGCm2 = shield.at("blanket_areal_density_g_cm2");
+                }
+            }
+            problems.throwIfAny();
+            curveOf = [=](double v) {
+                ble::Threat t = threat;
+                t.velocityKmS = v;
+                return ble::stuffedWhippleCriticalDiameter(sw, t);
+            };
+            const auto r = curveOf(threat.velocityKmS);
+            addWarnings(warnings, r.warnings);
+            sizing["performance"] =
+                performanceJson("stuffed Whipple (HB09 4-48..4-50)", r, threat.diameterCm);
+            out.curveLabel = "stuffed Whipple";
+        }
+    } else if (type == "single_wall") {
+        const ble::BleMaterial* m = material(shield, "material", "/shield", problems);
+        if (m && (!m->brinellHardness || !m->soundSpeedKmS)) {
+            problems.add("/shield/material",
+                         "material '" + m->name + "' has no Brinell hardness or sound speed",
+                         "an aluminium alloy of the BLE table");
+        }
+        const std::string fm = shield.at("failure_mode");
+        const auto failure = fm == "perforation"      ? ble::SingleWallFailure::Perforation
+                             : fm == "detached_spall" ? ble::SingleWallFailure::DetachedSpall
+                                                      : ble::SingleWallFailure::IncipientSpall;
+        problems.throwIfAny();
+        ble::SingleWallTarget target{0.0, m->densityGCm3, *m->brinellHardness, *m->soundSpeedKmS};
+        if (design) {
+            target.thicknessCm = ble::singleWallRequiredThicknessCm(threat, target, failure);
+            sizing["design"] = {{"equation", "Cour-Palais (HB09 4-1..4-5)"},
+                                {"thickness_mm", u::cmToMm(target.thicknessCm)},
+                                {"semi_infinite_penetration_mm",
+                                 u::cmToMm(ble::semiInfinitePenetrationCm(threat, target))}};
+        } else {
+            target.thicknessCm = u::mmToCm(requireMm(shield, "thickness_mm", mode, problems));
+            problems.throwIfAny();
+        }
+        curveOf = [=](double v) {
+            ble::Threat t = threat;
+            t.velocityKmS = v;
+            return ble::singleWallCriticalDiameter(target, t, failure);
+        };
+        const auto r = curveOf(threat.velocityKmS);
+        addWarnings(warnings, r.warnings);
+        sizing["performance"] =
+            performanceJson("Cour-Palais single wall (HB09 4-6), " + fm, r, threat.diameterCm);
+        out.curveLabel = "single wall (" + fm + ")";
+    } else if (type == "honeycomb_sandwich") {
+        const ble::BleMaterial* m = material(shield, "facesheet_material", "/shield", problems);
+        const double yield = rearWallYieldKsi(shield, m, "facesheet_material", problems);
+        const std::string equation = shield.at("equation");
+        if (equation == "handbook" && !shield.contains("cell_size_mm")) {
+            problems.add("/shield/cell_size_mm", "required key is missing for equation 'handbook'",
+                         "honeycomb cell size across flats [mm], > 0");
+        }
+        ble::HoneycombSandwichPanel panel;
+        panel.frontFacesheetDensityGCm3 = m ? m->densityGCm3 : 2.7;
+        panel.rearFacesheetYieldKsi = yield;
+        panel.coreThicknessCm = u::mmToCm(shield.at("core_thickness_mm").get<double>());
+        panel.cellSizeCm = u::mmToCm(shield.value("cell_size_mm", 0.0));
+        if (design) {
+            problems.throwIfAny();
+            const double t = ble::srlFacesheetDesignCm(threat, panel.frontFacesheetDensityGCm3,
+                                                       yield, panel.coreThicknessCm);
+            panel.frontFacesheetCm = panel.rearFacesheetCm = t;
+            sizing["design"] = {{"equation", "SRL facesheet sizing (BLAP09 eq 57, t_b = t_w)"},
+                                {"facesheet_mm", u::cmToMm(t)}};
+        } else {
+            const auto [front, rear] = facesheets(shield, problems);
+            panel.frontFacesheetCm = u::mmToCm(front);
+            panel.rearFacesheetCm = u::mmToCm(rear);
+        }
+        problems.throwIfAny();
+        curveOf = [=](double v) {
+            ble::Threat t = threat;
+            t.velocityKmS = v;
+            return equation == "srl" ? ble::srlCriticalDiameter(panel, t)
+                                     : ble::honeycombHandbookCriticalDiameter(panel, t);
+        };
+        const auto r = curveOf(threat.velocityKmS);
+        addWarnings(warnings, r.warnings);
+        sizing["performance"] = performanceJson(
+            equation == "srl" ? "Schaefer-Ryan-Lambert honeycomb sandwich (BLAP09 eqs 56-60)"
+                              : "HB09 6-1: Whipple NNO with S = min(2 D_cell, t_core)",
+            r, threat.diameterCm);
+        out.curveLabel = equation == "srl" ? "honeycomb (SRL)" : "honeycomb (HB09 6-1)";
+    } else { // foam_sandwich
+        const ble::BleMaterial* m = material(shield, "material", "/shield", problems);
+        const double yield = rearWallYieldKsi(shield, m, "material", problems);
+        const auto [front, rear] = facesheets(shield, problems);
+        problems.throwIfAny();
+        const double rho = m->densityGCm3;
+        const double relDensity = shield.at("relative_density_percent");
+        const double ppi = shield.at("ppi");
+        const bool hasCore = shield.contains("core_thickness_mm");
+        if (!hasCore && !design) {
+            problems.add("/shield/core_thickness_mm", "required key is missing in performance mode",
+                         "foam core thickness [mm], > 0 (or mode \"design\")");
+            problems.throwIfAny();
+        }
+        const double frontCm = u::mmToCm(front), rearCm = u::mmToCm(rear);
+        if (hasCore && shield.at("core_thickness_mm").get<double>() <= front + rear) {
+            problems.add("/shield/core_thickness_mm",
+                         "core not thicker than the two facesheets together",
+                         "core_thickness_mm > front + rear facesheet [mm]");
+            problems.throwIfAny();
+        }
+
+        // The source study's step 2: Whipple of the same areal mass.
+        ble::FoamPanelSpec spec;
+        spec.frontFacesheetCm = frontCm;
+        spec.rearFacesheetCm = rearCm;
+        spec.relativeDensityPercent = relDensity;
+        spec.foamMaterialDensityGCm3 = rho;
+        spec.plateDensityGCm3 = rho;
+        spec.plateYieldKsi = yield;
+        const ble::ThesisSizingOptions thesisOptions{convention, constants};
+        const auto initial = ble::thesisInitialStandoff(spec, threat, u::mmToCm(sMinMm),
+                                                        u::mmToCm(sMaxMm), thesisOptions);
+        addWarnings(warnings, initial.warnings);
+        json workflow;
+        const char* statusName =
+            initial.status == ble::InitialStandoffStatus::Solved ? "solved"
+            : initial.status == ble::InitialStandoffStatus::NoSolutionInEnvelope
+                ? "no_solution"
+                : "at_envelope_minimum";
+        workflow["initial_standoff"] = {
+            {"equation", "thesis eq 29: even-split Whipple of equal areal mass, d_c(S) = d, "
+                         "solved by Brent's method"},
+            {"status", statusName},
+            {"standoff_mm", u::cmToMm(initial.standoffCm)},
+            {"plate_mm", u::cmToMm(initial.plateCm)},
+            {"critical_diameter_mm", u::cmToMm(initial.criticalDiameterCm)},
+            {"iterations", initial.iterations},
+            {"message", initial.message}};
+        const bool solved = initial.status == ble::InitialStandoffStatus::Solved;
+        const double coreMm = hasCore ? shield.at("core_thickness_mm").get<double>()
+                                      : u::cmToMm(initial.standoffCm);
+        spec.coreThicknessCm = u::mmToCm(coreMm);
+        const auto splits = ble::thesisMassSplits(spec, threat, thesisOptions);
+        workflow["splits_at_core_thickness_mm"] = coreMm;
+        workflow["equivalent_solid_foam_mm"] = u::cmToMm(splits.solidFoamCm);
+        workflow["total_plate_mm"] = u::cmToMm(splits.totalPlateCm);
+        workflow["yield_ratio_convention"] = thesisCompat ? "thesis_inverted" : "handbook";
+        workflow["nno_constants"] = options.at("nno_constants");
+        json splitList = json::array();
+        for (const auto& s : splits.splits) {
+            json entry = {{"model", ble::massSplitName(s.model)}, {"feasible", s.feasible}};
+            if (s.feasible) {
+                entry["bumper_mm"] = u::cmToMm(s.bumperCm);
+                entry["rear_wall_mm"] = u::cmToMm(s.rearWallCm);
+                entry["critical_diameter_mm"] = u::cmToMm(s.performance.criticalDiameterCm);
+                entry["regime"] = ble::regimeName(s.performance.regime);
+                entry["verdict"] = s.perforated ? "P" : "NP";
+                addWarnings(warnings, s.designWarnings);
+            } else {
+                entry["reason"] = s.infeasibleReason;
+            }
+            splitList.push_back(entry);
+        }
+        workflow["mass_splits"] = splitList;
+        sizing["thesis_workflow"] = workflow;
+        if (!hasCore && !solved) {
+            warnings.push_back({"initial_standoff_" + std::string(statusName), initial.message});
+        }
+
+        // The direct foam-panel BLE (Ryan et al. 2010) where the core is known.
+        ble::FoamSandwichPanel panel;
+        panel.frontFacesheetCm = frontCm;
+        panel.frontFacesheetDensityGCm3 = rho;
+        panel.rearFacesheetCm = rearCm;
+        panel.rearFacesheetDensityGCm3 = rho;
+        panel.rearFacesheetYieldKsi = yield;
+        panel.coreThicknessCm = u::mmToCm(coreMm);
+        panel.foamDensityGCm3 = rho * relDensity / 100.0;
+        panel.poresPerInch = ppi;
+        curveOf = [=](double v) {
+            ble::Threat t = threat;
+            t.velocityKmS = v;
+            return ble::foamSandwichCriticalDiameter(panel, t);
+        };
+        const auto r = curveOf(threat.velocityKmS);
+        addWarnings(warnings, r.warnings);
+        sizing["performance"] =
+            performanceJson("Ryan et al. 2010 open-cell foam sandwich (FOAM10 eqs 1-5)", r,
+                            threat.diameterCm);
+        out.curveLabel = "foam sandwich (Ryan 2010)";
+
+        // What foam2layers needs next.
+        sizing["panel"] = {{"type", "foam_sandwich"},
+                           {"front_facesheet_mm", front},
+                           {"rear_facesheet_mm", rear},
+                           {"core_thickness_mm", coreMm},
+                           {"core_thickness_source", hasCore ? "given" : "initial_standoff"},
+                           {"relative_density_percent", relDensity},
+                           {"ppi", ppi},
+                           {"material", shield.at("material")}};
+    }
+
+    sizing["threat"] = {{"diameter_mm", threatIn.at("diameter_mm")},
+                        {"velocity_km_s", threat.velocityKmS},
+                        {"angle_deg", threat.angleDeg},
+                        {"normal_velocity_km_s",
+                         threat.velocityKmS * std::cos(u::degToRad(threat.angleDeg))},
+                        {"material", threatIn.at("material")},
+                        {"density_g_cm3", threat.densityGCm3}};
+    sizing["shield"] = shield;
+
+    if (curveOf) {
+        out.curve = ble::sampleBallisticLimitCurve(curveOf, vMin, vMax,
+                                                   options.at("curve_points").get<std::size_t>());
+        out.hasCurve = true;
+    }
+    sizing["warnings"] = warningsJson(warnings);
+    out.sizing = sizing;
+    return out;
+}
+
+} // namespace hvi::app

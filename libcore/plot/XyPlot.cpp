@@ -1,0 +1,228 @@
+#include "plot/XyPlot.hpp"
+
+#include "core/Error.hpp"
+#include "io/AtomicOutput.hpp"
+
+#include <algorithm>
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace hvi::plot {
+
+XyPlot::XyPlot()
+    : xMin(std::numeric_limits<double>::quiet_NaN()), xMax(std::numeric_limits<double>::quiet_NaN()),
+      yMin(std::numeric_limits<double>::quiet_NaN()), yMax(std::numeric_limits<double>::quiet_NaN()) {}
+
+std::vector<double> niceTicks(double lo, double hi, int target) {
+    std::vector<double> ticks;
+    if (!(hi > lo)) {
+        return {lo};
+    }
+    const double raw = (hi - lo) / std::max(target, 1);
+    const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = mag;
+    for (double f : {1.0, 2.0, 5.0, 10.0}) {
+        step = f * mag;
+        if (step >= raw) {
+            break;
+        }
+    }
+    for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) {
+        ticks.push_back(std::fabs(t) < 1e-12 * step ? 0.0 : t);
+    }
+    return ticks;
+}
+
+namespace {
+
+std::string formatTick(double v, double step) {
+    char buf[32];
+    const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+    std::snprintf(buf, sizeof buf, "%.*f", std::max(decimals, 0), v);
+    return buf;
+}
+
+void draw(cairo_t* cr, const XyPlot& plot) {
+    // Data ranges.
+    double x0 = plot.xMin, x1 = plot.xMax, y0 = plot.yMin, y1 = plot.yMax;
+    double dx0 = 1e300, dx1 = -1e300, dy0 = 1e300, dy1 = -1e300;
+    for (const auto& s : plot.series) {
+        for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+            if (std::isfinite(s.x[k]) && std::isfinite(s.y[k])) {
+                dx0 = std::min(dx0, s.x[k]);
+                dx1 = std::max(dx1, s.x[k]);
+                dy0 = std::min(dy0, s.y[k]);
+                dy1 = std::max(dy1, s.y[k]);
+            }
+        }
+    }
+    if (dx0 > dx1) {
+        dx0 = 0.0, dx1 = 1.0, dy0 = 0.0, dy1 = 1.0;
+    }
+    if (std::isnan(x0)) x0 = dx0;
+    if (std::isnan(x1)) x1 = dx1;
+    if (std::isnan(y0)) y0 = std::min(0.0, dy0);
+    if (std::isnan(y1)) y1 = dy1 + 0.05 * (dy1 - y0);
+    if (x1 <= x0) x1 = x0 + 1.0;
+    if (y1 <= y0) y1 = y0 + 1.0;
+
+    const double left = 70, right = 20, top = 40, bottom = 55;
+    const double pw = plot.width - left - right, ph = plot.height - top - bottom;
+    auto X = [&](double x) { return left + (x - x0) / (x1 - x0) * pw; };
+    auto Y = [&](double y) { return top + ph - (y - y0) / (y1 - y0) * ph; };
+
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+
+    // Grid and ticks.
+    cairo_set_font_size(cr, 11);
+    const auto xt = niceTicks(x0, x1), yt = niceTicks(y0, y1);
+    const double xStep = xt.size() > 1 ? xt[1] - xt[0] : 1.0;
+    const double yStep = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
+    cairo_set_line_width(cr, 0.5);
+    for (double t : xt) {
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_move_to(cr, X(t), top);
+        cairo_line_to(cr, X(t), top + ph);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        const std::string label = formatTick(t, xStep);
+        cairo_text_extents_t ext;
+        cairo_text_extents(cr, label.c_str(), &ext);
+        cairo_move_to(cr, X(t) - ext.width / 2, top + ph + 16);
+        cairo_show_text(cr, label.c_str());
+    }
+    for (double t : yt) {
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_move_to(cr, left, Y(t));
+        cairo_line_to(cr, left + pw, Y(t));
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        const std::string label = formatTick(t, yStep);
+        cairo_text_extents_t ext;
+        cairo_text_extents(cr, label.c_str(), &ext);
+        cairo_move_to(cr, left - ext.width - 6, Y(t) + ext.height / 2);
+        cairo_show_text(cr, label.c_str());
+    }
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.0);
+    cairo_rectangle(cr, left, top, pw, ph);
+    cairo_stroke(cr);
+
+    // Labels.
+    cairo_set_font_size(cr, 13);
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr, plot.xLabel.c_str(), &ext);
+    cairo_move_to(cr, left + pw / 2 - ext.width / 2, plot.height - 14);
+    cairo_show_text(cr, plot.xLabel.c_str());
+    cairo_save(cr);
+    cairo_text_extents(cr, plot.yLabel.c_str(), &ext);
+    cairo_move_to(cr, 18, top + ph / 2 + ext.width / 2);
+    cairo_rotate(cr, -M_PI / 2);
+    cairo_show_text(cr, plot.yLabel.c_str());
+    cairo_restore(cr);
+    cairo_set_font_size(cr, 14);
+    cairo_text_extents(cr, plot.title.c_str(), &ext);
+    cairo_move_to(cr, left + pw / 2 - ext.width / 2, 24);
+    cairo_show_text(cr, plot.title.c_str());
+
+    // Series, clipped to the frame.
+    cairo_save(cr);
+    cairo_rectangle(cr, left, top, pw, ph);
+    cairo_clip(cr);
+    for (const auto& s : plot.series) {
+        cairo_set_source_rgb(cr, s.color.r, s.color.g, s.color.b);
+        const std::size_t n = std::min(s.x.size(), s.y.size());
+        if (s.line) {
+            cairo_set_line_width(cr, s.width);
+            bool pen = false;
+            for (std::size_t k = 0; k < n; ++k) {
+                if (!std::isfinite(s.x[k]) || !std::isfinite(s.y[k])) {
+                    pen = false;
+                    continue;
+                }
+                pen ? cairo_line_to(cr, X(s.x[k]), Y(s.y[k]))
+                    : cairo_move_to(cr, X(s.x[k]), Y(s.y[k]));
+                pen = true;
+            }
+            cairo_stroke(cr);
+        } else {
+            cairo_set_line_width(cr, 1.2);
+            for (std::size_t k = 0; k < n; ++k) {
+                cairo_new_sub_path(cr);
+                cairo_arc(cr, X(s.x[k]), Y(s.y[k]), std::max(s.width, 3.0), 0, 2 * M_PI);
+                s.filledMarker ? cairo_fill(cr) : cairo_stroke(cr);
+            }
+        }
+    }
+    cairo_restore(cr);
+
+    // Legend, top right inside the frame.
+    cairo_set_font_size(cr, 11);
+    double ly = top + 16;
+    for (const auto& s : plot.series) {
+        if (s.label.empty()) {
+            continue;
+        }
+        cairo_text_extents(cr, s.label.c_str(), &ext);
+        const double lx = left + pw - ext.width - 40;
+        cairo_set_source_rgb(cr, s.color.r, s.color.g, s.color.b);
+        if (s.line) {
+            cairo_set_line_width(cr, s.width);
+            cairo_move_to(cr, lx, ly - 4);
+            cairo_line_to(cr, lx + 24, ly - 4);
+            cairo_stroke(cr);
+        } else {
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, lx + 12, ly - 4, 4, 0, 2 * M_PI);
+            s.filledMarker ? cairo_fill(cr) : cairo_stroke(cr);
+        }
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_move_to(cr, lx + 30, ly);
+        cairo_show_text(cr, s.label.c_str());
+        ly += 16;
+    }
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+} // namespace
+
+void writePlot(const XyPlot& plot, const std::string& path) {
+    const bool svg = endsWith(path, ".svg");
+    const bool png = endsWith(path, ".png");
+    if (!svg && !png) {
+        throw InputError("<flags>", "", "plot file '" + path + "' has an unknown extension",
+                         ".svg or .png");
+    }
+    io::AtomicOutput output(path);
+    const std::string tmp = output.tempPath().string();
+    cairo_surface_t* surface =
+        svg ? cairo_svg_surface_create(tmp.c_str(), plot.width, plot.height)
+            : cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(plot.width),
+                                         static_cast<int>(plot.height));
+    cairo_t* cr = cairo_create(surface);
+    draw(cr, plot);
+    cairo_destroy(cr);
+    cairo_status_t status = CAIRO_STATUS_SUCCESS;
+    if (png) {
+        status = cairo_surface_write_to_png(surface, tmp.c_str());
+    }
+    cairo_surface_finish(surface);
+    if (status == CAIRO_STATUS_SUCCESS) {
+        status = cairo_surface_status(surface);
+    }
+    cairo_surface_destroy(surface);
+    if (status != CAIRO_STATUS_SUCCESS) {
+        throw RuntimeFailure("cannot draw " + path + ": " + cairo_status_to_string(status));
+    }
+    output.commit();
+}
+
+} // namespace hvi::plot

@@ -1,0 +1,44 @@
+// Line and scatter plots drawn with cairo (SVG or PNG, chosen by the file extension), for the
+// ballistic limit curves of ble-size and the histories of hvi-assess.
+//
+// Deliberately small: linear axes with "nice" ticks, lines, filled or open markers, a legend.
+// Written atomically like every output (temporary name, then rename).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace hvi::plot {
+
+struct Rgb {
+    double r = 0.0, g = 0.0, b = 0.0;
+};
+
+struct Series {
+    std::string label;
+    std::vector<double> x, y;
+    Rgb color;
+    bool line = true;         ///< a polyline; false draws markers
+    bool filledMarker = true; ///< markers only: filled disc or open circle
+    double width = 1.5;       ///< line width or marker radius [pt]
+};
+
+struct XyPlot {
+    std::string title;
+    std::string xLabel, yLabel;
+    std::vector<Series> series;
+    double width = 720, height = 480; ///< [pt]
+    /// Axis ranges; NaN = from the data.
+    double xMin, xMax, yMin, yMax;
+    XyPlot();
+};
+
+/// Writes the plot to `path` (.svg or .png). Throws RuntimeFailure on I/O or cairo errors and
+/// InputError for an unknown extension.
+void writePlot(const XyPlot& plot, const std::string& path);
+
+/// "Nice" tick positions (1, 2, 5 x 10^k steps) covering [lo, hi] with about `target` ticks.
+std::vector<double> niceTicks(double lo, double hi, int target = 6);
+
+} // namespace hvi::plot
