@@ -158,6 +158,21 @@ public:
         return node->get<std::string>();
     }
 
+    /// Reads the sub-object `key` with `read(Section&)` when present (an issue if it is not
+    /// an object); returns whether the key was present.
+    template <class Read>
+    bool readSection(const std::string& key, const std::string& what, Read&& read) {
+        const json* node = child(key);
+        if (node == nullptr) {
+            return false;
+        }
+        Section sub(*node, pointerTo(key), m_file, m_issues, what);
+        if (sub.valid()) {
+            read(sub);
+        }
+        return true;
+    }
+
     /// Reports every key that was not read.
     void rejectUnknownKeys() {
         if (!m_valid) {
@@ -336,57 +351,43 @@ void readMaterial(const json& entry, const std::string& name, const std::string&
     spec.description = m.text("description", "one-line description of the material");
     spec.definitionJson = entry.dump();
 
-    if (const json* node = m.child("eos")) {
-        Section s(*node, m.pointerTo("eos"), file, issues, "equation-of-state object");
-        if (s.valid()) {
-            if (auto eos = readEos(s, spec.referenceDensity)) {
-                spec.eos = *eos;
-            }
+    const bool hasEos = m.readSection("eos", "equation-of-state object", [&](Section& s) {
+        if (auto eos = readEos(s, spec.referenceDensity)) {
+            spec.eos = *eos;
         }
-    } else {
+    });
+    const bool hasElastic = m.readSection("elastic", "elastic-constants object", [&](Section& s) {
+        spec.shearModulus = readShearModulus(s);
+    });
+    const bool hasThermal = m.readSection("thermal", "thermal-constants object",
+                                          [&](Section& s) { spec.thermal = readThermal(s); });
+    const bool hasStrength = m.readSection("strength", "strength-model object", [&](Section& s) {
+        if (auto jc = readStrength(s)) {
+            spec.strength = *jc;
+        }
+    });
+    const bool hasFailure = m.readSection("failure", "failure-model object", [&](Section& s) {
+        if (auto d = readFailure(s)) {
+            spec.failure = *d;
+        }
+    });
+
+    if (!hasEos) {
         m.issue(m.pointerTo("eos"), "missing", "equation-of-state object");
     }
-
-    if (const json* node = m.child("elastic")) {
-        Section s(*node, m.pointerTo("elastic"), file, issues, "elastic-constants object");
-        if (s.valid()) {
-            spec.shearModulus = readShearModulus(s);
-        }
+    // A strength model needs G for the elastic update and T_room/T_melt for T*; failure
+    // accumulates the plastic strain that only a strength model produces.
+    if (hasStrength && !hasElastic) {
+        m.issue(m.pointerTo("elastic"), "missing (required with a strength model)",
+                "elastic-constants object with shear_modulus_GPa");
     }
-    if (const json* node = m.child("thermal")) {
-        Section s(*node, m.pointerTo("thermal"), file, issues, "thermal-constants object");
-        if (s.valid()) {
-            spec.thermal = readThermal(s);
-        }
+    if (hasStrength && !hasThermal) {
+        m.issue(m.pointerTo("thermal"), "missing (required with a strength model)",
+                "thermal-constants object (specific heat, room and melt temperature)");
     }
-    if (const json* node = m.child("strength")) {
-        Section s(*node, m.pointerTo("strength"), file, issues, "strength-model object");
-        if (s.valid()) {
-            if (auto jc = readStrength(s)) {
-                spec.strength = *jc;
-            }
-        }
-        // A strength model needs G for the elastic update and T_room/T_melt for T*.
-        if (m.child("elastic") == nullptr) {
-            m.issue(m.pointerTo("elastic"), "missing (required with a strength model)",
-                    "elastic-constants object with shear_modulus_GPa");
-        }
-        if (m.child("thermal") == nullptr) {
-            m.issue(m.pointerTo("thermal"), "missing (required with a strength model)",
-                    "thermal-constants object (specific heat, room and melt temperature)");
-        }
-    }
-    if (const json* node = m.child("failure")) {
-        Section s(*node, m.pointerTo("failure"), file, issues, "failure-model object");
-        if (s.valid()) {
-            if (auto d = readFailure(s)) {
-                spec.failure = *d;
-            }
-        }
-        if (m.child("strength") == nullptr) {
-            m.issue(m.pointerTo("strength"), "missing (required with a failure model)",
-                    "strength-model object: failure accumulates plastic strain");
-        }
+    if (hasFailure && !hasStrength) {
+        m.issue(m.pointerTo("strength"), "missing (required with a failure model)",
+                "strength-model object: failure accumulates plastic strain");
     }
     m.rejectUnknownKeys();
 }

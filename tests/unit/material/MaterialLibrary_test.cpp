@@ -147,6 +147,18 @@ TEST(MaterialLibrary, StrengthWithoutElasticOrThermalConstantsIsRejected) {
     EXPECT_NE(message.find("/materials/Soft/thermal: missing"), std::string::npos) << message;
 }
 
+TEST(MaterialLibrary, FailureWithoutStrengthIsRejected) {
+    nlohmann::json doc = readJson(hvi::test::dataPath("material/user_library.json"));
+    doc["materials"]["MyAl"]["failure"] = {
+        {"type", "johnson_cook"}, {"D1", 0.0}, {"D2", 1.0}, {"D3", -1.0}, {"D4", 0.0}, {"D5", 0.0},
+        {"source", "test"}};
+    const std::string message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(message.find("doc: /materials/MyAl/strength: missing (required with a failure "
+                           "model)"),
+              std::string::npos)
+        << message;
+}
+
 TEST(MaterialLibrary, MissingSourceIsRejected) {
     nlohmann::json doc = readJson(hvi::test::dataPath("material/user_library.json"));
     doc["materials"]["MyAl"]["eos"].erase("source");
