@@ -24,4 +24,12 @@ constexpr double mpaToKsi(double mpa) { return mpa / kMpaPerKsi; }
 constexpr double ksiToMpa(double ksi) { return ksi * kMpaPerKsi; }
 constexpr double degToRad(double deg) { return deg * kPi / 180.0; }
 
+// Hydrocode boundary conversions (mm, us, mg system: see docs/conventions.md).
+/// A rate given per second, expressed per microsecond (the hydrocode's time unit).
+constexpr double perSecondToPerMicrosecond(double perSecond) { return perSecond * 1.0e-6; }
+/// Specific heat J/(kg K) -> MJ/(kg K), since specific energy in the hydrocode is MJ/kg.
+constexpr double jPerKgKToMjPerKgK(double jPerKgK) { return jPerKgK * 1.0e-6; }
+/// MPa -> GPa (the hydrocode's stress unit).
+constexpr double mpaToGpa(double mpa) { return mpa * kGpaPerMpa; }
+
 } // namespace hvi::units

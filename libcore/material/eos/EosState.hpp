@@ -1,0 +1,47 @@
+// The result every equation of state returns at one point, and the one batch loop they share.
+//
+// Units (hydrocode system, docs/conventions.md): density g/cm^3, specific internal energy
+// MJ/kg, pressure GPa, sound speed km/s. These are consistent: 1 g/cm^3 * 1 (km/s)^2 = 1 GPa
+// and 1 (km/s)^2 = 1 MJ/kg, so no factor appears in any EOS formula.
+//
+// Why a template batch loop rather than a virtual EOS base: the solver picks the EOS once per
+// body (std::visit on MaterialSpec::eos) and then runs this loop, which the compiler inlines
+// for the concrete model; no call per particle goes through a table.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace hvi::material {
+
+/// Pressure [GPa] and squared adiabatic sound speed [(km/s)^2] at one point.
+struct EosState {
+    double pressure = 0.0;
+    double soundSpeedSquared = 0.0;
+};
+
+/// Evaluates `eos.evaluate(rho, e)` for every point: density [g/cm^3] and specific internal
+/// energy [MJ/kg] in, pressure [GPa] and c^2 [(km/s)^2] out. All spans must have one length;
+/// throws std::invalid_argument otherwise (checked once per call, not per point).
+template <class Eos>
+void evaluateEos(const Eos& eos, std::span<const double> density,
+                 std::span<const double> specificEnergy, std::span<double> pressure,
+                 std::span<double> soundSpeedSquared) {
+    const std::size_t n = density.size();
+    if (specificEnergy.size() != n || pressure.size() != n || soundSpeedSquared.size() != n) {
+        throw std::invalid_argument("evaluateEos: spans differ in length (density " +
+                                    std::to_string(n) + ", energy " +
+                                    std::to_string(specificEnergy.size()) + ", pressure " +
+                                    std::to_string(pressure.size()) + ", c^2 " +
+                                    std::to_string(soundSpeedSquared.size()) + ")");
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const EosState s = eos.evaluate(density[i], specificEnergy[i]);
+        pressure[i] = s.pressure;
+        soundSpeedSquared[i] = s.soundSpeedSquared;
+    }
+}
+
+} // namespace hvi::material

@@ -1,0 +1,104 @@
+// Mie-Grueneisen equation of state referenced to a linear Us-up shock Hugoniot.
+//
+// Reference: D.J. Steinberg, "Equation of State and Strength Properties of Selected
+// Materials", LLNL UCRL-MA-106439 (1991; Change 1, 1996), Grueneisen form with S2 = S3 = 0;
+// the same form is LS-DYNA's *EOS_GRUNEISEN. Material constants live in
+// data/hydro_materials.json with their sources.
+//
+// Form used (cite this, not a paraphrase). With mu = rho/rho0 - 1 and e the specific
+// internal energy:
+//   compression, mu >= 0:
+//     P = rho0 c0^2 mu [1 + (1 - Gamma0/2) mu - (b/2) mu^2] / [1 - (s - 1) mu]^2
+//         + (Gamma0 + b mu) rho0 e
+//   expansion, mu < 0:
+//     P = rho0 c0^2 mu + (Gamma0 + b mu) rho0 e
+// Why this form: it is exactly the Hugoniot-referenced form P = P_H + rho Gamma (e - e_H)
+// with rho Gamma = rho0 (Gamma0 + b mu), P_H = rho0 c0^2 mu (1 + mu) / [1 - (s-1) mu]^2 (from
+// Us = c0 + s up and the Rankine-Hugoniot jump conditions) and e_H = P_H mu / (2 rho0 (1+mu)).
+// So every state on the Hugoniot gets P = rho0 Us up exactly; the unit test checks that.
+// The same rho Gamma is used in expansion so that dP/de is continuous through mu = 0; with
+// b = 0 (the Al 6061-T6 default) the expansion branch is P = rho0 c0^2 mu + Gamma0 rho0 e.
+//
+// Sound speed: c^2 = (dP/drho)_e + (P / rho^2) (dP/de)_rho, the isentropic derivative.
+//
+// Guards (both documented limits of the model, not physics):
+// * Compression cap. The Hugoniot denominator 1 - (s-1) mu vanishes at mu = 1/(s-1)
+//   (rho = 3.5 rho0 for s = 1.4). Beyond the point where it falls to kMinHugoniotDenominator
+//   the cold term continues along its tangent, so P stays finite, continuous and C1 and c^2
+//   stays constant. For Al (s = 1.4) the cap is at mu = 2 (~3.8 TPa), far above the ~0.6 that
+//   a 7 km/s Al-on-Al impact reaches; a linear Us-up fit is not valid there anyway.
+// * Sound-speed floor. In tension the Grueneisen term makes (dP/drho)_s negative once
+//   mu falls below about -0.27 at e = 0 for Al 6061-T6 (P ~ -20 GPa, ten times its spall
+//   strength: material that should have failed long before);
+//   c^2 is floored at (soundSpeedFloorFraction * c0)^2 so that time-step and artificial
+//   viscosity estimates stay positive and finite. Solids add 4G/(3 rho) for the longitudinal
+//   wave speed on top of this, which the solver does, so the floor mostly matters for fluids
+//   and failed material.
+//
+// Units: rho g/cm^3, e MJ/kg, c0 km/s, P GPa, c^2 (km/s)^2 (see EosState.hpp).
+// Precondition: rho > 0 (rho = 0 divides by zero in P/rho^2); NaN inputs propagate.
+#pragma once
+
+#include "material/eos/EosState.hpp"
+
+#include <algorithm>
+#include <string_view>
+
+namespace hvi::material {
+
+struct MieGruneisen {
+    static constexpr std::string_view kId = "eos.mie_gruneisen";
+    /// Smallest Hugoniot denominator 1 - (s-1) mu evaluated; beyond it the cold curve is
+    /// continued linearly (see the file comment).
+    static constexpr double kMinHugoniotDenominator = 0.2;
+    /// Default floor on the sound speed as a fraction of c0 (see the file comment).
+    static constexpr double kDefaultSoundSpeedFloorFraction = 0.1;
+
+    double referenceDensity = 0.0; ///< rho0 [g/cm^3]
+    double bulkSoundSpeed = 0.0;   ///< c0, intercept of the Us-up fit [km/s]
+    double hugoniotSlope = 0.0;    ///< s, slope of the Us-up fit [-]
+    double gruneisenGamma = 0.0;   ///< Gamma0 at rho0 [-]
+    double volumeCorrection = 0.0; ///< b, first-order volume correction to Gamma [-]
+    double soundSpeedFloorFraction = kDefaultSoundSpeedFloorFraction; ///< c >= this * c0
+
+    /// Pressure and c^2 at density rho [g/cm^3] and specific internal energy e [MJ/kg].
+    EosState evaluate(double rho, double e) const noexcept {
+        const double rho0 = referenceDensity;
+        const double k = rho0 * bulkSoundSpeed * bulkSoundSpeed; // rho0 c0^2 [GPa]
+        const double g0 = gruneisenGamma;
+        const double b = volumeCorrection;
+        const double mu = rho / rho0 - 1.0;
+
+        // Cold (e-independent) part f(mu) and its derivative df/dmu.
+        double cold = k * mu;
+        double dColdDmu = k;
+        if (mu > 0.0) {
+            const double sm1 = hugoniotSlope - 1.0;
+            const bool capped = sm1 > 0.0 && 1.0 - sm1 * mu < kMinHugoniotDenominator;
+            const double muEval = capped ? (1.0 - kMinHugoniotDenominator) / sm1 : mu;
+            const double d = 1.0 - sm1 * muEval;
+            const double n = 1.0 + (1.0 - 0.5 * g0) * muEval - 0.5 * b * muEval * muEval;
+            const double dn = (1.0 - 0.5 * g0) - b * muEval;
+            const double d2 = d * d;
+            cold = k * muEval * n / d2;
+            dColdDmu = k * ((n + muEval * dn) / d2 + 2.0 * sm1 * muEval * n / (d2 * d));
+            if (capped) {
+                cold += dColdDmu * (mu - muEval);
+            }
+        }
+
+        const double rhoGamma = rho0 * (g0 + b * mu); // rho Gamma(rho) = (dP/de)_rho
+        const double p = cold + rhoGamma * e;
+        // (dP/drho)_e = (df/dmu + rho0 b e) / rho0, since dmu/drho = 1/rho0.
+        const double dPdRho = (dColdDmu + rho0 * b * e) / rho0;
+        const double c2 = dPdRho + p * rhoGamma / (rho * rho);
+        const double cFloor = soundSpeedFloorFraction * bulkSoundSpeed;
+        // A NaN c2 fails the comparison and stays NaN: bad input is not hidden by the floor.
+        return {p, c2 < cFloor * cFloor ? cFloor * cFloor : c2};
+    }
+
+    /// Pressure only [GPa].
+    double pressure(double rho, double e) const noexcept { return evaluate(rho, e).pressure; }
+};
+
+} // namespace hvi::material

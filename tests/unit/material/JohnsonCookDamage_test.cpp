@@ -1,0 +1,112 @@
+// Johnson-Cook damage with the source study's Al 6061-T6 constants: the eps_f table of
+// hydrocode-notes.md section 4.3, the D3 sign (eps_f falls with triaxiality), the floor,
+// the clamps, accumulation and the failed state.
+#include "Tolerance.hpp"
+#include "material/failure/JohnsonCookDamage.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+
+using hvi::material::JohnsonCookDamage;
+using hvi::material::StressDeviator;
+using hvi::test::near;
+
+namespace {
+
+// shared/validation/thesis_cases.json: D1..D5 = -0.77, 1.45, -0.47, 0, 1.6.
+const JohnsonCookDamage kAl{.d1 = -0.77, .d2 = 1.45, .d3 = -0.47, .d4 = 0.0, .d5 = 1.6};
+constexpr double kQuasiStatic = 1.0e-6; // the reference rate 1/s in 1/us
+
+} // namespace
+
+TEST(JohnsonCookDamage, FailureStrainTableOfTheNotes) {
+    struct Row {
+        double sigmaStar, epsF;
+    };
+    // The notes give eps_f to three decimals; the brief's 0.002 bound is loose, and half a
+    // unit of the last printed digit (0.0005) is the tightest the table itself supports.
+    for (const Row& row : {Row{-1.0 / 3.0, 0.926}, Row{0.0, 0.680}, Row{1.0 / 3.0, 0.470},
+                           Row{2.0 / 3.0, 0.290}, Row{1.0, 0.136}}) {
+        EXPECT_TRUE(near("eps_f at sigma*=" + std::to_string(row.sigmaStar),
+                         kAl.failureStrain(row.sigmaStar, kQuasiStatic, 0.0), row.epsF, 5e-4, 0.0));
+    }
+    // And to full precision against sympy (-0.77 + 1.45 exp(-0.47/3) = 0.46973406...).
+    EXPECT_TRUE(near("eps_f(1/3) exact", kAl.failureStrain(1.0 / 3.0, kQuasiStatic, 0.0),
+                     0.46973406, 1e-8, 0.0));
+}
+
+TEST(JohnsonCookDamage, FailureStrainFallsAsTriaxialityRises) {
+    // The D3 sign pitfall: with exp(-D3 sigma*) the curve would rise instead.
+    double previous = std::numeric_limits<double>::infinity();
+    for (double s = -1.5; s <= 1.3; s += 0.1) {
+        const double epsF = kAl.failureStrain(s, kQuasiStatic, 0.0);
+        EXPECT_LT(epsF, previous) << "sigma*=" << s;
+        previous = epsF;
+    }
+}
+
+TEST(JohnsonCookDamage, FloorAtHighTriaxiality) {
+    // The fit reaches the 0.01 floor at sigma* = ln(0.78/1.45)/(-0.47) = 1.319 and crosses
+    // zero at ln(0.77/1.45)/(-0.47) = 1.3467.
+    EXPECT_TRUE(near("eps_f(1.30), above the floor", kAl.failureStrain(1.30, kQuasiStatic, 0.0),
+                     -0.77 + 1.45 * std::exp(-0.47 * 1.30), 0.0, 1e-12));
+    EXPECT_GT(kAl.failureStrain(1.30, kQuasiStatic, 0.0), kAl.minFailureStrain);
+    EXPECT_EQ(kAl.failureStrain(1.34, kQuasiStatic, 0.0), kAl.minFailureStrain); // fit 0.0024
+    EXPECT_EQ(kAl.failureStrain(1.35, kQuasiStatic, 0.0), kAl.minFailureStrain); // fit < 0
+    EXPECT_EQ(kAl.failureStrain(1.5, kQuasiStatic, 0.0), kAl.minFailureStrain);
+    EXPECT_EQ(kAl.failureStrain(50.0, kQuasiStatic, 0.0), kAl.minFailureStrain);
+    EXPECT_GT(kAl.minFailureStrain, 0.0);
+}
+
+TEST(JohnsonCookDamage, TriaxialityClampsAndHydrostaticStates) {
+    // sigma* = -P / sigma_eq: tension (P < 0) positive.
+    EXPECT_TRUE(near("sigma* uniaxial tension", kAl.triaxiality(-0.1, 0.3), 1.0 / 3.0, 0.0, 1e-15));
+    EXPECT_EQ(kAl.triaxiality(-1.0, 0.1), 1.5);   // clamped above
+    EXPECT_EQ(kAl.triaxiality(100.0, 0.3), -1.5); // strong shock: clamped below
+    EXPECT_EQ(kAl.triaxiality(-1.0, 0.0), 1.5);   // hydrostatic tension
+    EXPECT_EQ(kAl.triaxiality(1.0, 0.0), -1.5);   // hydrostatic compression
+    EXPECT_EQ(kAl.triaxiality(0.0, 0.0), 0.0);    // unstressed
+    // Deep compression: exp(D3 sigma*) would overflow unclamped; eps_f stays finite.
+    const double epsF = kAl.failureStrain(-1.0e4, kQuasiStatic, 0.0);
+    EXPECT_TRUE(
+        near("eps_f at the lower clamp", epsF, -0.77 + 1.45 * std::exp(0.47 * 1.5), 0.0, 1e-14));
+}
+
+TEST(JohnsonCookDamage, RateAndTemperatureTerms) {
+    // 4340 steel (Johnson & Cook 1985): D4 = 0.002, D5 = 0.61.
+    const JohnsonCookDamage steel{.d1 = 0.05, .d2 = 3.44, .d3 = -2.12, .d4 = 0.002, .d5 = 0.61};
+    const double base = 0.05 + 3.44 * std::exp(-2.12 * 0.5);
+    // 1000 /s = 1e-3 /us.
+    EXPECT_TRUE(near("rate term", steel.failureStrain(0.5, 1.0e-3, 0.0),
+                     base * (1.0 + 0.002 * std::log(1000.0)), 0.0, 1e-14));
+    EXPECT_TRUE(
+        near("below reference rate", steel.failureStrain(0.5, 1.0e-9, 0.0), base, 0.0, 1e-15));
+    EXPECT_TRUE(near("T* = 0.4", steel.failureStrain(0.5, kQuasiStatic, 0.4),
+                     base * (1.0 + 0.61 * 0.4), 0.0, 1e-14));
+}
+
+TEST(JohnsonCookDamage, AccumulationIsCappedAtOne) {
+    EXPECT_TRUE(near("D", JohnsonCookDamage::accumulate(0.2, 0.068, 0.68), 0.3, 0.0, 1e-15));
+    EXPECT_EQ(JohnsonCookDamage::accumulate(0.95, 0.5, 0.68), 1.0);
+}
+
+TEST(JohnsonCookDamage, FailedMaterialCarriesNoShearAndNoTension) {
+    StressDeviator s{0.2, -0.1, 0.05};
+    double p = -0.8;
+    JohnsonCookDamage::applyFailedState(1.0, s, p);
+    EXPECT_EQ(s.vonMises(), 0.0);
+    EXPECT_EQ(p, 0.0);
+    // Compression is kept.
+    s = {0.2, -0.1, 0.05};
+    p = 3.0;
+    JohnsonCookDamage::applyFailedState(1.0, s, p);
+    EXPECT_EQ(s.vonMises(), 0.0);
+    EXPECT_EQ(p, 3.0);
+    // Not yet failed: untouched.
+    s = {0.2, -0.1, 0.05};
+    p = -0.8;
+    JohnsonCookDamage::applyFailedState(0.999, s, p);
+    EXPECT_EQ(s.zz, 0.2);
+    EXPECT_EQ(p, -0.8);
+}

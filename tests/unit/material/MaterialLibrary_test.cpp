@@ -1,0 +1,195 @@
+// The material library: the built-in Al 6061-T6 entry against the source study's own data
+// file (an independent copy of the constants), unit conversion on reading, and the errors a
+// user gets for an unknown name or a bad file.
+#include "TestPaths.hpp"
+#include "Tolerance.hpp"
+#include "core/Error.hpp"
+#include "material/MaterialLibrary.hpp"
+
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <string>
+
+using hvi::InputError;
+using hvi::material::JohnsonCookDamage;
+using hvi::material::JohnsonCookStrength;
+using hvi::material::MaterialLibrary;
+using hvi::material::MaterialSpec;
+using hvi::material::MieGruneisen;
+using hvi::test::near;
+
+namespace {
+
+nlohmann::json readJson(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    return nlohmann::json::parse(in);
+}
+
+/// The message of the InputError that `f` throws ("" if it throws none).
+template <class F>
+std::string inputErrorMessage(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(MaterialLibrary, Al6061T6HasTheSourcedHydroConstants) {
+    const MaterialSpec& al = MaterialLibrary::builtin().get("Al6061-T6");
+    ASSERT_TRUE(std::holds_alternative<MieGruneisen>(al.eos));
+    const auto& eos = std::get<MieGruneisen>(al.eos);
+    // Steinberg 1996 values as written in the JSON: exact decimal round trips.
+    EXPECT_EQ(eos.referenceDensity, 2.703);
+    EXPECT_EQ(al.referenceDensity, 2.703);
+    EXPECT_EQ(eos.bulkSoundSpeed, 5.24);
+    EXPECT_EQ(eos.hugoniotSlope, 1.40);
+    EXPECT_EQ(eos.gruneisenGamma, 1.97);
+    EXPECT_EQ(eos.volumeCorrection, 0.0);
+    EXPECT_EQ(al.shearModulus, 27.6);
+    ASSERT_TRUE(al.thermal.has_value());
+    // 885 J/(kg K) -> MJ/(kg K): one multiplication by 1e-6.
+    EXPECT_TRUE(near("c_v", al.thermal->specificHeat, 885.0e-6, 0.0, 1e-15));
+    EXPECT_TRUE(al.hasStrength());
+    EXPECT_TRUE(al.hasFailure());
+    EXPECT_FALSE(al.definitionJson.empty());
+}
+
+TEST(MaterialLibrary, Al6061T6JohnsonCookConstantsEqualTheSourceStudy) {
+    // The validation file is the source study's own record; the library must agree with it
+    // after the MPa -> GPa and 1/s -> 1/us conversions.
+    const auto thesis =
+        readJson(hvi::test::sharedPath("validation/thesis_cases.json"))["materials"]["Al6061-T6"];
+    const auto& js = thesis["johnson_cook_strength"];
+    const auto& jf = thesis["johnson_cook_failure"];
+    const MaterialSpec& al = MaterialLibrary::builtin().get("Al6061-T6");
+
+    const auto& jc = std::get<JohnsonCookStrength>(al.strength);
+    // Conversions are one multiplication: 1e-15 relative.
+    EXPECT_TRUE(near("A [GPa]", jc.yieldStress, js["A_MPa"].get<double>() * 1e-3, 0.0, 1e-15));
+    EXPECT_TRUE(near("B [GPa]", jc.hardeningModulus, js["B_MPa"].get<double>() * 1e-3, 0.0, 1e-15));
+    EXPECT_EQ(jc.hardeningExponent, js["n"].get<double>());
+    EXPECT_EQ(jc.strainRateCoefficient, js["C"].get<double>());
+    EXPECT_EQ(jc.thermalExponent, js["m"].get<double>());
+    EXPECT_TRUE(near("reference rate [1/us]", jc.referenceStrainRatePerUs, 1.0e-6, 0.0, 1e-15));
+    EXPECT_EQ(al.thermal->meltTemperature, js["T_melt_K"].get<double>());
+    EXPECT_EQ(al.thermal->roomTemperature, js["T_room_K"].get<double>());
+
+    const auto& d = std::get<JohnsonCookDamage>(al.failure);
+    EXPECT_EQ(d.d1, jf["D1"].get<double>());
+    EXPECT_EQ(d.d2, jf["D2"].get<double>());
+    EXPECT_EQ(d.d3, jf["D3"].get<double>());
+    EXPECT_EQ(d.d4, jf["D4"].get<double>());
+    EXPECT_EQ(d.d5, jf["D5"].get<double>());
+    EXPECT_LT(d.d3, 0.0); // the sign convention of JohnsonCookDamage.hpp
+    EXPECT_GT(d.minFailureStrain, 0.0);
+}
+
+TEST(MaterialLibrary, EveryBuiltinMaterialLoads) {
+    const auto names = MaterialLibrary::builtin().names();
+    for (const char* expected :
+         {"Al6061-T6", "Al6061-T6-Tillotson", "Al2017-T4", "Steel4340", "ideal_gas_5_3"}) {
+        EXPECT_TRUE(MaterialLibrary::builtin().contains(expected)) << expected;
+    }
+    EXPECT_EQ(names.size(), 5u);
+    const MaterialSpec& gas = MaterialLibrary::builtin().get("ideal_gas_5_3");
+    EXPECT_FALSE(gas.hasStrength());
+    EXPECT_FALSE(gas.hasFailure());
+    EXPECT_TRUE(
+        near("gamma", std::get<hvi::material::IdealGas>(gas.eos).gamma, 5.0 / 3.0, 0.0, 1e-15));
+    EXPECT_EQ(MaterialLibrary::builtin().get("Al2017-T4").referenceDensity, 2.80);
+    EXPECT_TRUE(std::holds_alternative<hvi::material::Tillotson>(
+        MaterialLibrary::builtin().get("Al6061-T6-Tillotson").eos));
+}
+
+TEST(MaterialLibrary, UnknownNameListsTheKnownOnes) {
+    const std::string message =
+        inputErrorMessage([] { MaterialLibrary::builtin().get("Al7075-T6"); });
+    ASSERT_FALSE(message.empty()) << "no InputError thrown";
+    EXPECT_NE(message.find("unknown material 'Al7075-T6'"), std::string::npos) << message;
+    for (const auto& name : MaterialLibrary::builtin().names()) {
+        EXPECT_NE(message.find(name), std::string::npos) << name << " missing from: " << message;
+    }
+}
+
+TEST(MaterialLibrary, BadFieldsAreAllReportedByPointer) {
+    const auto path = hvi::test::dataPath("material/bad_field.json");
+    try {
+        MaterialLibrary::fromFile(path.string());
+        FAIL() << "bad_field.json was accepted";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        // Every issue names the file and the JSON pointer of the offending field.
+        EXPECT_NE(message.find(path.string() + ": /materials/MyAl/eos/c0_km_s: must be > 0, got "
+                                               "-5.24"),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("/materials/MyAl/eos/gama0: unknown key 'gama0'"), std::string::npos)
+            << message;
+        EXPECT_NE(message.find("/materials/MyAl/eos/gamma0: missing"), std::string::npos)
+            << message;
+        EXPECT_EQ(e.issues().size(), 3u) << message;
+    }
+}
+
+TEST(MaterialLibrary, StrengthWithoutElasticOrThermalConstantsIsRejected) {
+    const std::string message = inputErrorMessage([] {
+        MaterialLibrary::fromFile(
+            hvi::test::dataPath("material/strength_without_elastic.json").string());
+    });
+    EXPECT_NE(message.find("/materials/Soft/elastic: missing (required with a strength model)"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("/materials/Soft/thermal: missing"), std::string::npos) << message;
+}
+
+TEST(MaterialLibrary, FailureWithoutStrengthIsRejected) {
+    nlohmann::json doc = readJson(hvi::test::dataPath("material/user_library.json"));
+    doc["materials"]["MyAl"]["failure"] = {
+        {"type", "johnson_cook"}, {"D1", 0.0}, {"D2", 1.0}, {"D3", -1.0}, {"D4", 0.0}, {"D5", 0.0},
+        {"source", "test"}};
+    const std::string message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(message.find("doc: /materials/MyAl/strength: missing (required with a failure "
+                           "model)"),
+              std::string::npos)
+        << message;
+}
+
+TEST(MaterialLibrary, MissingSourceIsRejected) {
+    nlohmann::json doc = readJson(hvi::test::dataPath("material/user_library.json"));
+    doc["materials"]["MyAl"]["eos"].erase("source");
+    const std::string message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(message.find("doc: /materials/MyAl/eos/source: missing"), std::string::npos)
+        << message;
+}
+
+TEST(MaterialLibrary, UnreadableOrInvalidFilesAreInputErrors) {
+    EXPECT_NE(inputErrorMessage([] {
+                  MaterialLibrary::fromFile(hvi::test::dataPath("material/absent.json").string());
+              }).find("cannot be opened"),
+              std::string::npos);
+    const std::string message = inputErrorMessage(
+        [] { MaterialLibrary::fromFile(hvi::test::dataPath("material/not_json.json").string()); });
+    EXPECT_NE(message.find("(valid JSON)"), std::string::npos) << message;
+    EXPECT_EQ(message.find("[json.exception"), std::string::npos) << message;
+}
+
+TEST(MaterialLibrary, UserLibraryLoadsAndMergesOverTheBuiltinOne) {
+    const MaterialLibrary user =
+        MaterialLibrary::fromFile(hvi::test::dataPath("material/user_library.json").string());
+    const MaterialSpec& myAl = user.get("MyAl");
+    EXPECT_FALSE(myAl.hasStrength());
+    EXPECT_EQ(std::get<MieGruneisen>(myAl.eos).volumeCorrection, 0.48);
+
+    MaterialLibrary merged = MaterialLibrary::builtin();
+    merged.merge(user);
+    EXPECT_TRUE(merged.contains("MyAl"));
+    EXPECT_TRUE(merged.contains("Steel4340"));
+    // The user's Al6061-T6 (hydrodynamic only) replaced the built-in one.
+    EXPECT_FALSE(merged.get("Al6061-T6").hasStrength());
+    EXPECT_TRUE(MaterialLibrary::builtin().get("Al6061-T6").hasStrength());
+}
