@@ -373,6 +373,13 @@ void fillDefaults(const json& root, const json* node, json& value) {
         if (value.contains(key) && value[key].is_object()) {
             fillDefaults(root, sub, value[key]);
         }
+        const json* resolvedSub = resolveRef(root, sub);
+        if (value.contains(key) && value[key].is_array() && resolvedSub &&
+            resolvedSub->contains("items")) {
+            for (auto& element : value[key]) {
+                fillDefaults(root, &(*resolvedSub)["items"], element);
+            }
+        }
     }
 }
 

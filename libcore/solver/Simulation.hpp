@@ -19,6 +19,7 @@
 #include "sph/NeighbourSearch.hpp"
 #include "sph/ParticleGenerator.hpp"
 #include "sph/SphHydro.hpp"
+#include "solver/SceneLibrary.hpp"
 
 #include <memory>
 #include <optional>

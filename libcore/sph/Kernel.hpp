@@ -130,6 +130,7 @@ struct WendlandC4Kernel {
 /// The dimensional kernel functions for any of the shape structs above.
 template <class Shape>
 struct Kernel2D {
+    using ShapeType = Shape;
     static constexpr std::string_view kId = Shape::kId;
 
     /// W(q, h) [1/mm^2].

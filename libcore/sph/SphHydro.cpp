@@ -19,11 +19,12 @@ struct StepVote {
 template <class Kern>
 void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const HydroOptions& opt,
                    const std::vector<double>& bzz, const std::vector<double>& brr,
-                   const std::vector<double>& brz, ParticleRates& rates, StepVote& vote) {
+                   const std::vector<double>& brz, const std::vector<double>& areaMassOf,
+                   const std::vector<double>& volumeOf, ParticleRates& rates, StepVote& vote) {
+    using Shape = typename Kern::ShapeType;
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
     const double alpha = opt.avAlpha, beta = opt.avBeta, eta2 = opt.avEta2;
-    const double inv2Pi = 1.0 / (2.0 * units::kPi);
     const double invPi = 1.0 / units::kPi;
     const std::size_t activeCount = list.active.size();
     const auto* src = list.source.data();
@@ -55,13 +56,16 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 const double dz = zi - ps.z[s];
                 const double dr = ri - sg * ps.r[s];
                 const double hij = 0.5 * (hi + ps.h[s]);
+                const double invH = 1.0 / hij;
+                const double invH2 = invH * invH;
                 const double dist2 = dz * dz + dr * dr;
-                const double q = std::sqrt(dist2) / hij;
-                const double gor = Kern::gradOverR(q, hij);
+                const double q = std::sqrt(dist2) * invH;
+                // grad W = kNorm f'(q)/q / h^4 * x_ij (Kernel.hpp), without the divisions.
+                const double gor = Shape::kNorm * Shape::shapeDerivOverQ(q) * invH2 * invH2;
                 const double wz = gor * dz, wr = gor * dr; // grad_i W_ij
                 const double mj = ps.mass[s];
                 const double rj = ps.r[s];
-                const double areaMass = axi ? mj * inv2Pi / rj : mj;
+                const double areaMass = areaMassOf[s];
                 const double w = axi ? mj * invPi / (ri + rj) : mj;
                 const double vzj = ps.vz[s], vrj = sg * ps.vr[s];
                 const double dvz = vzi - vzj, dvr = vri - vrj;
@@ -83,7 +87,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 de -= w * (dvz * ((bzzi - 0.5 * visc) * wz + brzi * wr) +
                            dvr * (brzi * wz + (brri - 0.5 * visc) * wr));
                 // Velocity gradient and its linear correction matrix.
-                const double vol = areaMass / ps.rho[s];
+                const double vol = volumeOf[s];
                 lzz -= vol * dvz * wz;
                 lzr -= vol * dvz * wr;
                 lrz -= vol * dvr * wz;
@@ -167,6 +171,10 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list,
     m_bzz.resize(n);
     m_brr.resize(n);
     m_brz.resize(n);
+    m_areaMass.resize(n);
+    m_volume.resize(n);
+    const bool axi = m_options.axisymmetric;
+    const double inv2Pi = 1.0 / (2.0 * units::kPi);
     const bool strength = ps.hasStrength();
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
@@ -177,10 +185,14 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list,
         m_bzz[i] = (szz - ps.p[i]) * inv;
         m_brr[i] = (srr - ps.p[i]) * inv;
         m_brz[i] = srz * inv;
+        // Area mass A = m / (2 pi r) and area V = A / rho in the (z, r) plane.
+        m_areaMass[i] = axi ? ps.mass[i] * inv2Pi / ps.r[i] : ps.mass[i];
+        m_volume[i] = m_areaMass[i] / ps.rho[i];
     }
     StepVote vote;
     withKernel(m_options.kernel, [&](auto kernel) {
-        evaluatePairs<decltype(kernel)>(ps, list, m_options, m_bzz, m_brr, m_brz, rates, vote);
+        evaluatePairs<decltype(kernel)>(ps, list, m_options, m_bzz, m_brr, m_brz, m_areaMass,
+                                        m_volume, rates, vote);
     });
     m_stableDt = vote.dt;
     m_limitingParticle = vote.particle;

@@ -66,6 +66,7 @@ private:
     int32_t m_limitingParticle = -1;
     // Per-particle sigma / rho^2, computed once per evaluation (reused by every neighbour).
     std::vector<double> m_bzz, m_brr, m_brz;
+    std::vector<double> m_areaMass, m_volume; ///< m / (2 pi r) and its area, per particle
 };
 
 } // namespace hvi::sph

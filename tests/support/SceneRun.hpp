@@ -1,0 +1,34 @@
+// Builds and runs small scenes in-process for the verification tests.
+#pragma once
+
+#include "scene/Scene.hpp"
+#include "solver/SceneLibrary.hpp"
+#include "solver/Simulation.hpp"
+
+#include <functional>
+#include <nlohmann/json.hpp>
+
+namespace hvi::test {
+
+/// Parses a scene document (validated like a file) with the built-in materials.
+inline scene::Scene makeScene(const nlohmann::json& doc) {
+    const auto library = solver::sceneLibrary(doc.value("materials", nlohmann::json::object()),
+                                              "<test>");
+    return scene::parseScene(doc, "<test>", library.names());
+}
+
+/// Runs until `until` [us] or a stop rule; calls `each` after every step if given.
+inline void runUntil(solver::Simulation& sim, double until,
+                     const std::function<void(const solver::Simulation&)>& each = {}) {
+    while (sim.time() < until * (1.0 - 1e-12)) {
+        sim.advance();
+        if (each) {
+            each(sim);
+        }
+        if (sim.stopReason() && *sim.stopReason() != "end_time") {
+            break;
+        }
+    }
+}
+
+} // namespace hvi::test
