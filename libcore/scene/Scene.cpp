@@ -228,13 +228,6 @@ Scene parseScene(const json& document, const std::string& file,
             issues.push_back({file, ptr + "/shape", "empty rectangle",
                               "z_max_mm > z_min_mm and r_max_mm > r_min_mm"});
         }
-        if (scene.geometry == Geometry::Axisymmetric && b.velocityR != 0.0 &&
-            b.shape.boundRMin() <= 0.0) {
-            issues.push_back({file, ptr + "/velocity/r_km_s",
-                              "a body on the axis cannot move radially as a whole in "
-                              "axisymmetric geometry",
-                              "0, or planar geometry"});
-        }
         if (b.shape.kind != ShapeKind::Sphere && b.spacing * 2.0 > b.shape.boundZMax() -
                                                                        b.shape.boundZMin()) {
             issues.push_back({file, ptr + "/shape",

@@ -168,6 +168,7 @@ void Simulation::advance() {
             ps.srz[i] = m_srzHalf[i] + half * rt.dsrz[i];
         }
     }
+    clampSmoothingLengths();
     m_materials->updatePressure(ps);
     computeRates();
 
@@ -192,13 +193,7 @@ void Simulation::advance() {
             ps.srz[i] = m_srzHalf[i] + half * rt.dsrz[i];
         }
     }
-    // Smoothing lengths between a quarter and twice their initial value.
-    for (const auto& fill : m_fills) {
-        const double h0 = m_scene.sph.smoothingLengthFactor * fill.spacing;
-        for (std::size_t i = fill.first; i < fill.first + fill.count; ++i) {
-            ps.h[i] = std::clamp(ps.h[i], 0.25 * h0, 2.0 * h0);
-        }
-    }
+    clampSmoothingLengths();
     m_materials->applyPlasticity(ps, rt, m_neighbours.active);
     m_materials->updatePressure(ps);
 
@@ -208,6 +203,19 @@ void Simulation::advance() {
     deleteParticles();
     if (m_step % kProgressEvery == 0) {
         updateProgress();
+    }
+}
+
+void Simulation::clampSmoothingLengths() {
+    // Between a quarter and twice the initial value: the lower bound keeps h (and with it the
+    // time step) from collapsing where particles pile up, the upper bound keeps the cells of
+    // the neighbour search from growing with an expanding debris cloud.
+    auto& ps = m_particles;
+    for (const auto& fill : m_fills) {
+        const double h0 = m_scene.sph.smoothingLengthFactor * fill.spacing;
+        for (std::size_t i = fill.first; i < fill.first + fill.count; ++i) {
+            ps.h[i] = std::clamp(ps.h[i], 0.25 * h0, 2.0 * h0);
+        }
     }
 }
 

@@ -88,6 +88,7 @@ public:
 private:
     void computeRates();
     void deleteParticles();
+    void clampSmoothingLengths();
     void updateProgress();
 
     scene::Scene m_scene;

@@ -68,8 +68,22 @@ void buildNeighbourList(const ParticleSet& ps, const NeighbourSearchOptions& opt
         }
     }
 
+    // Cell size from the median smoothing length, not the largest: where h varies (compressed
+    // material next to an expanding debris cloud) cells sized by the largest h would hold
+    // many times the particles a typical search needs. Particles reach further cells when
+    // their pair support asks for it, and cells are skipped by their own largest h (below).
+    std::vector<double> hAlive;
+    hAlive.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (ps.alive[i]) {
+            hAlive.push_back(ps.h[i]);
+        }
+    }
+    std::nth_element(hAlive.begin(), hAlive.begin() + static_cast<std::ptrdiff_t>(hAlive.size() / 2),
+                     hAlive.end());
+    const double hMedian = hAlive[hAlive.size() / 2];
     // Cell grid; grow the cells if the box would need too many (a far-flung debris particle).
-    double cell = support;
+    double cell = options.kernelSupport * hMedian;
     const double spanZ = zMax - zMin;
     const double spanR = rMax - rLow;
     constexpr double kMaxCells = 4.0e6;
@@ -112,7 +126,16 @@ void buildNeighbourList(const ParticleSet& ps, const NeighbourSearchOptions& opt
         }
     }
 
-    // Active cells: those with an awake particle, dilated by one cell.
+    // Largest smoothing length per cell, for skipping cells no pair support reaches.
+    std::vector<double> cellHMax(cellCount, 0.0);
+    for (std::size_t j = 0; j < nExt; ++j) {
+        if (cellOfExt[j] >= 0) {
+            const double hj = ps.h[list.source[j]];
+            cellHMax[cellOfExt[j]] = std::max(cellHMax[cellOfExt[j]], hj);
+        }
+    }
+    // Active cells: those with an awake particle, dilated by the longest reach of a pair.
+    const auto reachCells = static_cast<int64_t>(std::ceil(support / cell));
     std::vector<uint8_t> awakeCell(cellCount, options.skipDormant ? 0 : 1);
     if (options.skipDormant) {
         for (std::size_t i = 0; i < n; ++i) {
@@ -127,8 +150,8 @@ void buildNeighbourList(const ParticleSet& ps, const NeighbourSearchOptions& opt
             if (!awakeCell[iz * nr + ir]) {
                 continue;
             }
-            for (int64_t dz = -1; dz <= 1; ++dz) {
-                for (int64_t dr = -1; dr <= 1; ++dr) {
+            for (int64_t dz = -reachCells; dz <= reachCells; ++dz) {
+                for (int64_t dr = -reachCells; dr <= reachCells; ++dr) {
                     const int64_t jz = iz + dz, jr = ir + dr;
                     if (jz >= 0 && jz < nz && jr >= 0 && jr < nr) {
                         activeCell[jz * nr + jr] = 1;
@@ -160,10 +183,20 @@ void buildNeighbourList(const ParticleSet& ps, const NeighbourSearchOptions& opt
             const int64_t c = cellOfExt[i];
             const int64_t iz = c / nr, ir = c % nr;
             const std::size_t before = local.size();
-            for (int64_t jz = std::max<int64_t>(iz - 1, 0); jz <= std::min(iz + 1, nz - 1); ++jz) {
-                for (int64_t jr = std::max<int64_t>(ir - 1, 0); jr <= std::min(ir + 1, nr - 1);
+            const auto cellsOut = static_cast<int64_t>(std::ceil(kappa * 0.5 * (hi + hMax) / cell));
+            for (int64_t jz = std::max<int64_t>(iz - cellsOut, 0); jz <= std::min(iz + cellsOut, nz - 1); ++jz) {
+                const double zLoCell = zMin + static_cast<double>(jz) * cell;
+                const double gapZ = std::max({0.0, zLoCell - zi, zi - (zLoCell + cell)});
+                for (int64_t jr = std::max<int64_t>(ir - cellsOut, 0); jr <= std::min(ir + cellsOut, nr - 1);
                      ++jr) {
                     const int64_t cc = jz * nr + jr;
+                    const double rLoCell = rLow + static_cast<double>(jr) * cell;
+                    const double gapR = std::max({0.0, rLoCell - ri, ri - (rLoCell + cell)});
+                    const double cellReach = kappa * 0.5 * (hi + cellHMax[cc]);
+                    if (cellStart[cc] == cellStart[cc + 1] ||
+                        gapZ * gapZ + gapR * gapR >= cellReach * cellReach) {
+                        continue;
+                    }
                     for (int64_t k = cellStart[cc]; k < cellStart[cc + 1]; ++k) {
                         const int32_t j = cellMembers[k];
                         if (j == i) {

@@ -116,13 +116,18 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             }
             double hoopRate = 0.0;
             if (axi) {
-                const double grr = 2.0 * gr / rhoi;
-                hoopRate = vri * grr;
+                const double grz = 2.0 * gz / rhoi, grr = 2.0 * gr / rhoi;
+                hoopRate = vri / ri; // exact: d(ln 2 pi r)/dt
                 const double sThTh = strength ? -(ps.szz[i] + ps.srr[i]) : 0.0;
                 const double sigmaThTh = sThTh - ps.p[i];
-                const double hoop = -(sigmaThTh / rhoi) * grr;
-                ar += hoop;
-                de -= vri * hoop;
+                // The radial hoop force, and the removal of the spurious axial part of the
+                // radius-weighted pair sum (g_z vanishes on a symmetric neighbourhood but not at
+                // a free surface near the axis); see docs/formulation.md.
+                const double hoopZ = -(sigmaThTh / rhoi) * grz;
+                const double hoopR = -(sigmaThTh / rhoi) * grr;
+                az += hoopZ;
+                ar += hoopR;
+                de -= vzi * hoopZ + vri * hoopR;
             }
             rates.az[i] += az;
             rates.ar[i] += ar;
