@@ -1,0 +1,211 @@
+#include "app/Foam2LayersTool.hpp"
+
+#include "app/MaterialTable.hpp"
+#include "core/Units.hpp"
+#include "geometry/FoamLayerStack.hpp"
+#include "geometry/InputChecks.hpp"
+#include "geometry/SceneBuilder.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace hvi::app {
+
+using geometry::formatNumber;
+using nlohmann::json;
+
+namespace {
+
+/// Where foam_panel.json holds each key of geometry::FoamCoreSpec.
+const std::vector<KeyLocation>& foamKeys() {
+    static const std::vector<KeyLocation> keys = {
+        {"standoff_mm", "/panel/core_thickness_mm"},
+        {"relative_density_percent", "/panel/relative_density_percent"},
+        {"ppi", "/panel/ppi"},
+        {"material_density_g_cm3", "/panel/material"},
+        {"domain_radius_mm", "/numerics/domain_radius_mm"},
+        {"particle_spacing_mm", "/numerics/particle_spacing_mm"},
+        {"ppi_factor", "/reduction/ppi_factor"},
+        {"thickness_rule", "/reduction/layer_rule"},
+        {"ligament_thickness_mm", "/reduction/ligament_thickness_mm"},
+        {"layer_model", "/reduction/model"},
+        {"segment_length_mm", "/reduction/segment_length_mm"},
+        {"segment_gap_fraction", "/reduction/segment_gap_fraction"},
+        {"segment_stagger_fraction", "/reduction/segment_stagger_fraction"},
+    };
+    return keys;
+}
+
+} // namespace
+
+PanelInputKind foamPanelInputKind() {
+    PanelInputKind kind;
+    kind.schemaName = "foam_panel";
+    kind.sizingPanelType = "foam_sandwich";
+    kind.otherTypesHint = "foam2layers reads foam panels; hcomb2rings reads honeycomb_sandwich";
+    kind.defaultId = "foam_panel";
+    kind.sizingPanelDrops = {"core_thickness_source", "rear_wall_yield_ksi", "rear_wall_yield_MPa"};
+    kind.materialPointers = {"/threat/material", "/panel/material"};
+    return kind;
+}
+
+SceneResult buildFoamScene(const PanelInput& input, const json& provenance) {
+    geometry::SceneBuilder builder(input.threat(), input.frame(), input.numerics());
+    const geometry::PanelFrame frame = builder.frame();
+    const double density =
+        materialDensityGCm3(frame.facesheetMaterial).value_or(geometry::kMissing);
+
+    geometry::FoamCoreSpec spec;
+    spec.standoffMm = frame.coreThicknessMm;
+    spec.relativeDensityPercent = input.number("/panel/relative_density_percent");
+    spec.ppi = input.number("/panel/ppi");
+    spec.materialDensityGCm3 = density;
+    spec.domainRadiusMm = builder.domainRadiusMm();
+    spec.ppiFactor = input.number("/reduction/ppi_factor");
+    spec.rule = geometry::parseFoamThicknessRule(input.text("/reduction/layer_rule", "mass"))
+                    .value_or(geometry::FoamThicknessRule::Mass);
+    spec.ligamentThicknessMm = input.number("/reduction/ligament_thickness_mm");
+    spec.model = geometry::parseFoamLayerModel(input.text("/reduction/model", "disks"))
+                     .value_or(geometry::FoamLayerModel::Disks);
+    spec.segmentLengthMm = input.number("/reduction/segment_length_mm");
+    spec.segmentGapFraction = input.number("/reduction/segment_gap_fraction");
+    spec.segmentStaggerFraction = input.number("/reduction/segment_stagger_fraction");
+    spec.particleSpacingMm = builder.numerics().particleSpacingMm;
+
+    geometry::FoamLayerStack stack;
+    try {
+        stack = geometry::buildFoamLayerStack(spec, input.origin.file(), "");
+    } catch (const InputError& e) {
+        throw input.origin.relabel(e, foamKeys());
+    }
+
+    // Layer bodies: one per disk, or one per segment ("core_layer_03_seg_002").
+    const std::string material = frame.facesheetMaterial;
+    std::map<int, int> segmentsPerLayer;
+    int largestSegment = 1;
+    for (const auto& layer : stack.layers) {
+        largestSegment = std::max(largestSegment, ++segmentsPerLayer[layer.layerIndex]);
+    }
+    int segment = 0;
+    int previousLayer = 0;
+    for (const auto& layer : stack.layers) {
+        segment = layer.layerIndex == previousLayer ? segment + 1 : 1;
+        previousLayer = layer.layerIndex;
+        std::string name =
+            geometry::indexedBodyName("core_layer", static_cast<std::size_t>(layer.layerIndex),
+                                      static_cast<std::size_t>(stack.layerCount));
+        if (stack.model == geometry::FoamLayerModel::Segments) {
+            name = geometry::indexedBodyName(name + "_seg", static_cast<std::size_t>(segment),
+                                             static_cast<std::size_t>(largestSegment));
+        }
+        builder.addCoreBody(name, "core_layer", material, layer.zFrontMm, layer.thicknessMm,
+                            layer.innerRadiusMm, layer.outerRadiusMm);
+    }
+
+    SceneResult result;
+    for (const auto& warning : stack.warnings) {
+        result.warnings.push_back(warning.message);
+    }
+    for (const auto& warning : builder.warnings()) {
+        result.warnings.push_back(warning.message);
+    }
+
+    const double facesheetArealGCm2 =
+        density * units::mmToCm(frame.frontFacesheetMm + frame.rearFacesheetMm);
+    const double relativeDifference = stack.reducedArealMassGCm2 / stack.realArealMassGCm2 - 1.0;
+    json summary = {
+        {"core", "foam"},
+        {"input_kind", input.fromSizing ? "ble-size sizing" : "foam_panel"},
+        {"core_thickness_mm", frame.coreThicknessMm},
+        {"relative_density_percent", spec.relativeDensityPercent},
+        {"ppi", spec.ppi},
+        {"ppi_factor", spec.ppiFactor},
+        {"effective_ppi", stack.effectivePpi},
+        {"pores_exact", stack.poresExact},
+        {"pore_count", stack.poreCount},
+        {"layer_count", stack.layerCount},
+        {"layer_bodies", stack.layers.size()},
+        {"layer_rule", geometry::toString(stack.rule)},
+        {"layer_model", geometry::toString(stack.model)},
+        {"solid_thickness_mm", stack.solidThicknessMm},
+        {"layer_thickness_mm", stack.layerThicknessMm},
+        {"layer_spacing_mm", stack.layerSpacingMm},
+        {"layer_positions", "centre-spaced: layer k's mid-plane at z = front facesheet + k x "
+                            "layer_spacing_mm"},
+        {"material_density_g_cm3", density},
+        {"real_core_areal_mass_g_cm2", stack.realArealMassGCm2},
+        {"reduced_core_areal_mass_g_cm2", stack.reducedArealMassGCm2},
+        {"core_areal_mass_relative_difference", relativeDifference},
+        {"real_panel_areal_mass_g_cm2", facesheetArealGCm2 + stack.realArealMassGCm2},
+        {"reduced_panel_areal_mass_g_cm2", facesheetArealGCm2 + stack.reducedArealMassGCm2},
+        {"warnings", result.warnings},
+    };
+
+    const geometry::ThreatSpec threat = input.threat();
+    const std::string description =
+        "Foam-core sandwich panel: " + formatNumber(frame.frontFacesheetMm) + " / " +
+        formatNumber(frame.coreThicknessMm) + " / " + formatNumber(frame.rearFacesheetMm) +
+        " mm, " + formatNumber(spec.relativeDensityPercent) + " % " + formatNumber(spec.ppi) +
+        " PPI " + material + " foam reduced to " + std::to_string(stack.layerCount) + " layers (" +
+        std::string(geometry::toString(stack.model)) + ", rule " +
+        std::string(geometry::toString(stack.rule)) + "); " + formatNumber(threat.diameterMm) +
+        " mm " + threat.material + " sphere at " + formatNumber(threat.velocityKmS) + " km/s";
+    result.scene = builder.sceneJson(input.id(), description, summary, provenance);
+    result.feRectangles = builder.feRectangles();
+
+    result.report = {
+        input.id() + ": foam core " + formatNumber(frame.coreThicknessMm) + " mm, " +
+            formatNumber(spec.ppi) + " PPI x " + formatNumber(spec.ppiFactor) + " = " +
+            formatNumber(stack.effectivePpi) + " effective PPI -> " +
+            (stack.poresExact == static_cast<double>(stack.poreCount)
+                 ? std::to_string(stack.poreCount) + " pores"
+                 : formatNumber(stack.poresExact) + " pores, rounded up to " +
+                       std::to_string(stack.poreCount)) +
+            " -> " + std::to_string(stack.layerCount) + " layers (" +
+            std::string(geometry::toString(stack.model)) + ", rule " +
+            std::string(geometry::toString(stack.rule)) + ")",
+        "layer thickness " + formatNumber(stack.layerThicknessMm) + " mm, spacing " +
+            formatNumber(stack.layerSpacingMm) + " mm between mid-planes (gap " +
+            formatNumber(stack.layerSpacingMm - stack.layerThicknessMm) + " mm)",
+        "core areal mass: real " + formatNumber(stack.realArealMassGCm2) + " g/cm2, reduced " +
+            formatNumber(stack.reducedArealMassGCm2) + " g/cm2 (" +
+            formatPercent(relativeDifference) + ")",
+    };
+    for (const auto& line : sharedReport(builder)) {
+        result.report.push_back(line);
+    }
+    return result;
+}
+
+Foam2LayersTool::Foam2LayersTool()
+    : SceneWriterTool("foam2layers",
+                      "Foam-core sandwich panel -> 2D axisymmetric impact scene for hvi-run: the "
+                      "open-cell foam core becomes a mass-conserved stack of flat layers "
+                      "(effective PPI = ppi_factor x PPI, pores rounded up, layers = pores - 1)",
+                      foamPanelInputKind()) {}
+
+void Foam2LayersTool::addCoreOptions(CLI::App& app, FlagOverlay& flags) {
+    flags.addNumber(app, "--relative-density-percent", "/panel/relative_density_percent",
+                    "Foam relative density [%], 0 < value < 100");
+    flags.addNumber(app, "--ppi", "/panel/ppi", "Foam pores per inch [1/in], > 0");
+    flags.addNumber(app, "--effective-ppi-factor,--ppi-factor", "/reduction/ppi_factor",
+                    "Effective PPI / real PPI [-], 0 < value <= 1 (default 0.5)");
+    flags.addString(app, "--layer-rule", "/reduction/layer_rule",
+                    "Layer thickness: mass (default, conserves the foam's areal mass), eq31 "
+                    "(source study's eq 31), ligament (--ligament-thickness-mm)",
+                    {"mass", "eq31", "ligament"});
+    flags.addNumber(app, "--ligament-thickness-mm", "/reduction/ligament_thickness_mm",
+                    "Measured ligament thickness [mm], > 0 (with --layer-rule ligament)");
+    flags.addString(app, "--model", "/reduction/model",
+                    "Layers as full disks (default) or staggered flat segments",
+                    {"disks", "segments"});
+    flags.addNumber(app, "--segment-length-mm", "/reduction/segment_length_mm",
+                    "Radial length of one flat segment [mm], > 0 (with --model segments)");
+    flags.addNumber(app, "--segment-gap-fraction", "/reduction/segment_gap_fraction",
+                    "Gap / (segment + gap) [-], 0 <= value < 1 (default 0.5)");
+    flags.addNumber(app, "--segment-stagger-fraction", "/reduction/segment_stagger_fraction",
+                    "Radial shift of even layers / segment period [-], 0 <= value < 1 "
+                    "(default 0.5)");
+}
+
+} // namespace hvi::app

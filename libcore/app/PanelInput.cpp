@@ -1,0 +1,258 @@
+#include "app/PanelInput.hpp"
+
+#include "app/MaterialTable.hpp"
+#include "geometry/InputChecks.hpp"
+#include "io/JsonInput.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace hvi::app {
+
+using nlohmann::json;
+
+namespace {
+
+const std::string kFacesheet = "/panel/facesheet_mm";
+const std::string kFront = "/panel/front_facesheet_mm";
+const std::string kRear = "/panel/rear_facesheet_mm";
+
+bool isSizingFile(const json& document) {
+    if (!document.is_object()) {
+        return false;
+    }
+    auto it = document.find("provenance");
+    return it != document.end() && it->is_object() && it->value("tool", json()) == "ble-size";
+}
+
+/// Step 2 of the header: the tool's document from a ble-size sizing.json.
+json fromSizing(const json& sizing, const std::string& file, const PanelInputKind& kind,
+                std::vector<std::string>& notes) {
+    std::vector<InputIssue> issues;
+    json out = json::object();
+    if (sizing.contains("id") && sizing["id"].is_string()) {
+        out["id"] = sizing["id"];
+    }
+    if (sizing.contains("description") && sizing["description"].is_string()) {
+        out["description"] = sizing["description"];
+    }
+    for (const char* block : {"threat", "panel"}) {
+        if (!sizing.contains(block) || !sizing[block].is_object()) {
+            issues.push_back({file, std::string("/") + block,
+                              sizing.contains(block) ? "is not an object"
+                                                     : "missing from the ble-size sizing file",
+                              std::string("the ") + block + " block ble-size writes"});
+        }
+    }
+    if (!issues.empty()) {
+        throw InputError(std::move(issues));
+    }
+
+    json threat = sizing["threat"];
+    if (threat.contains("angle_deg")) {
+        const json& angle = threat["angle_deg"];
+        if (!angle.is_number() || angle.get<double>() != 0.0) {
+            issues.push_back(
+                {file, "/threat/angle_deg",
+                 "is " + angle.dump() + ": a 2D axisymmetric scene holds only a normal impact",
+                 "0 (impact along the panel normal); size oblique impacts with "
+                 "ble-size only"});
+        }
+        threat.erase("angle_deg");
+    }
+    if (threat.contains("density_g_cm3")) {
+        notes.push_back("threat density_g_cm3 = " + threat["density_g_cm3"].dump() + " in " + file +
+                        " is not carried into the scene: hvi-run takes the projectile density "
+                        "from its material ('" +
+                        threat.value("material", std::string("Al6061-T6")) + "')");
+        threat.erase("density_g_cm3");
+    }
+    out["threat"] = threat;
+
+    json panel = sizing["panel"];
+    const json type = panel.value("type", json());
+    if (type != kind.sizingPanelType) {
+        issues.push_back({file, "/panel/type",
+                          type.is_null() ? "required key is missing" : "is " + type.dump(),
+                          "\"" + kind.sizingPanelType + "\" (" + kind.otherTypesHint + ")"});
+    }
+    panel.erase("type");
+    for (const auto& key : kind.sizingPanelDrops) {
+        panel.erase(key);
+    }
+    for (const auto& [from, to] : kind.sizingPanelRenames) {
+        if (panel.contains(from)) {
+            if (!panel.contains(to)) {
+                panel[to] = panel[from];
+            }
+            panel.erase(from);
+        }
+    }
+    out["panel"] = panel;
+    if (!issues.empty()) {
+        throw InputError(std::move(issues));
+    }
+    return out;
+}
+
+/// A file's facesheet_mm stands for both sides; a flag for one side replaces it for that
+/// side only, so split it before the flags are applied.
+void splitFacesheetForFlags(json& document, const FlagOverlay& flags) {
+    if (!(flags.given(kFront) || flags.given(kRear)) || !document.is_object() ||
+        !document.contains("panel") || !document["panel"].is_object()) {
+        return;
+    }
+    json& panel = document["panel"];
+    if (!panel.contains("facesheet_mm")) {
+        return;
+    }
+    for (const char* side : {"front_facesheet_mm", "rear_facesheet_mm"}) {
+        if (!panel.contains(side)) {
+            panel[side] = panel["facesheet_mm"];
+        }
+    }
+    panel.erase("facesheet_mm");
+}
+
+/// Step 5: facesheets, core thickness, materials.
+void checkAndNormalise(json& resolved, const PanelInputKind& kind, const InputOrigin& origin) {
+    std::vector<InputIssue> issues;
+    auto add = [&](const std::string& pointer, std::string problem, std::string expected) {
+        issues.push_back(
+            {origin.labelOf(pointer), pointer, std::move(problem), std::move(expected)});
+    };
+    json& panel = resolved["panel"];
+    const bool both = panel.contains("facesheet_mm");
+    if (both && (panel.contains("front_facesheet_mm") || panel.contains("rear_facesheet_mm"))) {
+        const std::string other = panel.contains("front_facesheet_mm") ? kFront : kRear;
+        add(kFacesheet, "given together with " + other.substr(7),
+            "either facesheet_mm (both facesheets) or front_facesheet_mm and rear_facesheet_mm, "
+            "not both");
+    } else if (both) {
+        panel["front_facesheet_mm"] = panel["facesheet_mm"];
+        panel["rear_facesheet_mm"] = panel["facesheet_mm"];
+        panel.erase("facesheet_mm");
+    } else {
+        if (!panel.contains("front_facesheet_mm")) {
+            add(kFront, "required key is missing",
+                "front (impact-side) facesheet thickness [mm], > 0 (or facesheet_mm for both)");
+        }
+        if (!panel.contains("rear_facesheet_mm")) {
+            add(kRear, "required key is missing",
+                "rear facesheet thickness [mm], > 0 (or facesheet_mm for both)");
+        }
+    }
+    if (issues.empty()) {
+        const double front = panel["front_facesheet_mm"].get<double>();
+        const double rear = panel["rear_facesheet_mm"].get<double>();
+        const double core = panel["core_thickness_mm"].get<double>();
+        if (!(core > front + rear)) {
+            add("/panel/core_thickness_mm",
+                "is " + geometry::formatNumber(core) +
+                    " mm, not more than the two facesheets together (" +
+                    geometry::formatNumber(front + rear) + " mm)",
+                "core thickness between the facesheets [mm] > front_facesheet_mm + "
+                "rear_facesheet_mm; a thinner core is not a sandwich panel: check the units");
+        }
+    }
+    for (const auto& pointer : kind.materialPointers) {
+        const json::json_pointer ptr(pointer);
+        if (!resolved.contains(ptr)) {
+            continue;
+        }
+        const std::string name = resolved.at(ptr).get<std::string>();
+        if (!materialDensityGCm3(name)) {
+            add(pointer, "unknown material '" + name + "'", "one of: " + materialNameList());
+        }
+    }
+    if (!issues.empty()) {
+        throw InputError(std::move(issues));
+    }
+}
+
+} // namespace
+
+double PanelInput::number(const std::string& pointer) const {
+    const json::json_pointer ptr(pointer);
+    return resolved.contains(ptr) ? resolved.at(ptr).get<double>() : geometry::kMissing;
+}
+
+std::string PanelInput::text(const std::string& pointer, const std::string& fallback) const {
+    const json::json_pointer ptr(pointer);
+    return resolved.contains(ptr) ? resolved.at(ptr).get<std::string>() : fallback;
+}
+
+geometry::ThreatSpec PanelInput::threat() const {
+    geometry::ThreatSpec threat;
+    threat.diameterMm = number("/threat/diameter_mm");
+    threat.velocityKmS = number("/threat/velocity_km_s");
+    threat.material = text("/threat/material", threat.material);
+    return threat;
+}
+
+geometry::PanelFrame PanelInput::frame() const {
+    geometry::PanelFrame frame;
+    frame.frontFacesheetMm = number(kFront);
+    frame.coreThicknessMm = number("/panel/core_thickness_mm");
+    frame.rearFacesheetMm = number(kRear);
+    frame.facesheetMaterial = text("/panel/material", frame.facesheetMaterial);
+    return frame;
+}
+
+geometry::SceneNumerics PanelInput::numerics() const {
+    geometry::SceneNumerics numerics;
+    numerics.particleSpacingMm = number("/numerics/particle_spacing_mm");
+    numerics.erosionFactor = number("/numerics/erosion_factor");
+    numerics.coreDiscretization =
+        geometry::parseDiscretization(text("/numerics/core_discretization", "fe"))
+            .value_or(geometry::Discretization::Fe);
+    numerics.rearWallDiscretization =
+        geometry::parseDiscretization(text("/numerics/rear_wall_discretization", "fe"))
+            .value_or(geometry::Discretization::Fe);
+    numerics.domainRadiusMm = number("/numerics/domain_radius_mm");
+    numerics.endTimeUs = number("/numerics/end_time_us");
+    return numerics;
+}
+
+PanelInput loadPanelInput(const std::string& inputFile, const PanelInputKind& kind,
+                          const FlagOverlay& flags) {
+    PanelInput input;
+    input.inputFile = inputFile;
+    const std::string label = inputFile.empty() ? std::string(kFlagsLabel) : inputFile;
+    input.origin = InputOrigin(label, flags.givenPointers());
+
+    json document = inputFile.empty() ? json::object() : io::readJsonFile(inputFile);
+    if (!document.is_object()) {
+        throw InputError(label, "", "is " + std::string(document.type_name()) + ", not an object",
+                         "a JSON object (schema " + kind.schemaName + ")");
+    }
+    if (isSizingFile(document)) {
+        input.fromSizing = true;
+        document = fromSizing(document, label, kind, input.notes);
+    }
+    splitFacesheetForFlags(document, flags);
+    flags.requireFinite();
+    flags.applyTo(document);
+
+    try {
+        io::validateAgainstSchema(document, kind.schemaName, label);
+    } catch (const InputError& e) {
+        throw input.origin.relabel(e);
+    }
+    input.resolved = io::withSchemaDefaults(document, kind.schemaName);
+    if (!input.resolved.contains("id")) {
+        const std::string stem = std::filesystem::path(inputFile).stem().string();
+        input.resolved["id"] =
+            inputFile.empty() || inputFile == "-" || stem.empty() ? kind.defaultId : stem;
+    }
+    // The rear wall follows the core unless told otherwise: --core-discretization sph alone
+    // gives the all-SPH scene hvi-run can run before its FE solver exists.
+    json& numerics = input.resolved["numerics"];
+    if (!numerics.contains("rear_wall_discretization")) {
+        numerics["rear_wall_discretization"] = numerics.value("core_discretization", "fe");
+    }
+    checkAndNormalise(input.resolved, kind, input.origin);
+    return input;
+}
+
+} // namespace hvi::app
