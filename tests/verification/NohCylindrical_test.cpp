@@ -4,7 +4,9 @@
 // pre-shock density rho0 (1 + t/r). It exercises the hoop terms of the axisymmetric
 // formulation (continuity's v_r/r, the hoop force) and the axis. Tolerances of issue #4:
 // post-shock density within 10 % (SPH smears the shock and heats the axis: "wall heating"),
-// shock radius within 5 %.
+// shock radius within 5 %. The error converges with resolution (measured: at 0.01 mm the
+// post-shock density is 14.7 and the shock 6 % ahead; at 0.005 mm, 15.5 and 3 %), so the test
+// runs at 0.005 mm, 30 particles across the shocked region.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 
@@ -18,7 +20,7 @@ using nlohmann::json;
 TEST(NohCylindrical, ShockRadiusAndPostShockDensity) {
     // The gas cylinder must still be feeding the shock at tEnd: its edge (r = 0.8 - t) stays
     // outside the shock (t/3) until t = 0.6; at t = 0.45 it is at 0.35, the shock at 0.15.
-    const double spacing = 0.01, length = 1.0, radius = 0.8, tEnd = 0.45;
+    const double spacing = 0.005, length = 1.0, radius = 0.8, tEnd = 0.45;
     json doc = {
         {"geometry", "axisymmetric"},
         {"sph", {{"particle_spacing_mm", spacing}, {"min_density_ratio", 0.01},
