@@ -1,5 +1,7 @@
 #include "app/PanelInput.hpp"
 
+#include "ble/BleMaterials.hpp"
+
 #include "app/MaterialTable.hpp"
 #include "geometry/InputChecks.hpp"
 #include "io/JsonInput.hpp"
@@ -59,6 +61,14 @@ json fromSizing(const json& sizing, const std::string& file, const PanelInputKin
                  "ble-size only"});
         }
         threat.erase("angle_deg");
+    }
+    threat.erase("normal_velocity_km_s"); // derived by ble-size from speed and angle
+    const auto* projectileMaterial =
+        ble::findBleMaterial(threat.value("material", std::string("Al6061-T6")));
+    if (threat.contains("density_g_cm3") && projectileMaterial &&
+        std::fabs(threat["density_g_cm3"].get<double>() - projectileMaterial->densityGCm3) <=
+            1e-9 * projectileMaterial->densityGCm3) {
+        threat.erase("density_g_cm3"); // the material's own density: nothing to say
     }
     if (threat.contains("density_g_cm3")) {
         notes.push_back("threat density_g_cm3 = " + threat["density_g_cm3"].dump() + " in " + file +

@@ -49,4 +49,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// The run stopped on a signal; what it leaves behind (checkpoint, partial file) is said
+/// before this is thrown.
+class Interrupted : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 } // namespace hvi

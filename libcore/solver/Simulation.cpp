@@ -84,6 +84,7 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     m_penetrated.assign(m_scene.bodies.size(), 0);
 
     m_rates.resize(m_particles.size(), m_particles.hasStrength());
+    m_aliveCount = m_particles.size();
     refreshRates();
     const Totals t = totals();
     m_initialEnergy = t.kinetic + t.internal;
@@ -244,6 +245,7 @@ void Simulation::deleteParticles() {
             m_deletedMass += ps.mass[i];
             m_deletedMomentumZ += ps.mass[i] * ps.vz[i];
             ++(runaway ? m_runawayDeleted : m_outOfDomainDeleted);
+            --m_aliveCount;
         }
     }
 }
@@ -352,6 +354,10 @@ void Simulation::restoreClock(double time, long step, double dt, double initialE
     m_deletedMomentumZ = deletedMomentumZ;
     m_runawayDeleted = runaway;
     m_outOfDomainDeleted = outOfDomain;
+    m_aliveCount = 0;
+    for (const auto a : m_particles.alive) {
+        m_aliveCount += a ? 1 : 0;
+    }
     refreshRates();
     updateProgress();
 }

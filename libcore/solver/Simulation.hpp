@@ -60,6 +60,9 @@ public:
     const scene::Scene& scene() const { return m_scene; }
     const std::vector<sph::BodyFill>& bodyFills() const { return m_fills; }
     std::size_t activeCount() const { return m_neighbours.active.size(); }
+    std::size_t aliveCount() const { return m_aliveCount; }
+    /// The particle whose stability limit set the last time step (-1 if none).
+    int32_t dtLimitingParticle() const { return m_hydro->limitingParticle(); }
     std::size_t pairCount() const { return m_neighbours.pairCount(); }
 
     Totals totals() const;
@@ -108,6 +111,7 @@ private:
     double m_initialEnergy = 0.0;
     double m_deletedEnergy = 0.0, m_deletedMass = 0.0, m_deletedMomentumZ = 0.0;
     std::size_t m_runawayDeleted = 0, m_outOfDomainDeleted = 0;
+    std::size_t m_aliveCount = 0;
     double m_runawaySpeed = 0.0;
     double m_zMin = 0.0, m_zMax = 0.0, m_rMax = 0.0;
 

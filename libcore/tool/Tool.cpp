@@ -66,6 +66,9 @@ int Tool::run(int argc, char** argv) {
             std::cerr << m_name << ": " << issue.format() << "\n";
         }
         return static_cast<int>(ExitCode::BadInput);
+    } catch (const Interrupted& e) {
+        std::cerr << m_name << ": " << e.what() << "\n";
+        return static_cast<int>(ExitCode::Interrupted);
     } catch (const RuntimeFailure& e) {
         std::cerr << m_name << ": error: " << e.what() << "\n";
         return static_cast<int>(ExitCode::RuntimeFailure);

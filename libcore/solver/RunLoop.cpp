@@ -1,0 +1,320 @@
+#include "solver/RunLoop.hpp"
+
+#include "core/Error.hpp"
+#include "io/Checkpoint.hpp"
+#include "io/RunFileReader.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <omp.h>
+
+namespace hvi::solver {
+
+std::atomic<bool> g_stopRequested{false};
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// The particle fields of the run file, viewed from the solver's arrays. The deviator is
+/// interleaved (zz, rr, rz) per particle in the file, so it is copied into `deviator`.
+io::ParticleFieldsView viewOf(const sph::ParticleSet& ps, std::vector<double>& deviator) {
+    io::ParticleFieldsView v;
+    v.z = ps.z;
+    v.r = ps.r;
+    v.vz = ps.vz;
+    v.vr = ps.vr;
+    v.mass = ps.mass;
+    v.density = ps.rho;
+    v.pressure = ps.p;
+    v.internalEnergy = ps.e;
+    v.smoothingLength = ps.h;
+    v.bodyId = ps.body;
+    v.alive = ps.alive;
+    if (ps.hasStrength()) {
+        deviator.resize(3 * ps.size());
+        for (std::size_t i = 0; i < ps.size(); ++i) {
+            deviator[3 * i] = ps.szz[i];
+            deviator[3 * i + 1] = ps.srr[i];
+            deviator[3 * i + 2] = ps.srz[i];
+        }
+        v.damage = ps.damage;
+        v.plasticStrain = ps.plasticStrain;
+        v.stressDeviator = deviator;
+    }
+    return v;
+}
+
+io::HistoryRow historyRow(const Simulation& sim) {
+    const Totals t = sim.totals();
+    io::HistoryRow row;
+    row.timeUs = sim.time();
+    row.dtUs = sim.lastDt();
+    row.step = sim.step();
+    row.kineticEnergy = t.kinetic;
+    row.internalEnergy = t.internal;
+    row.totalEnergy = t.kinetic + t.internal;
+    row.energyError = io::relativeEnergyError(row.totalEnergy, t.deletedEnergy,
+                                              sim.initialEnergy());
+    row.deletedEnergy = t.deletedEnergy;
+    row.mass = t.mass;
+    row.momentumZ = t.momentumZ;
+    row.aliveCount = static_cast<std::int64_t>(t.alive);
+    row.deletedCount = static_cast<std::int64_t>(t.deleted);
+    row.activeCount = static_cast<std::int64_t>(t.active);
+    return row;
+}
+
+std::string formatDuration(double seconds) {
+    char buf[32];
+    if (!std::isfinite(seconds) || seconds < 0) {
+        return "?";
+    }
+    if (seconds < 120) {
+        std::snprintf(buf, sizeof buf, "%.0f s", seconds);
+    } else if (seconds < 7200) {
+        std::snprintf(buf, sizeof buf, "%.1f min", seconds / 60);
+    } else {
+        std::snprintf(buf, sizeof buf, "%.1f h", seconds / 3600);
+    }
+    return buf;
+}
+
+} // namespace
+
+io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
+    const auto& ps = sim.particles();
+    io::CheckpointState s;
+    s.timeUs = sim.time();
+    s.step = sim.step();
+    s.doubles = {{"z", ps.z},   {"r", ps.r},     {"vz", ps.vz}, {"vr", ps.vr}, {"mass", ps.mass},
+                 {"h", ps.h},   {"rho", ps.rho}, {"e", ps.e}};
+    if (ps.hasStrength()) {
+        s.doubles["szz"] = ps.szz;
+        s.doubles["srr"] = ps.srr;
+        s.doubles["srz"] = ps.srz;
+        s.doubles["plastic_strain"] = ps.plasticStrain;
+        s.doubles["damage"] = ps.damage;
+    }
+    s.ints["body"] = ps.body;
+    s.ints["alive"] = std::vector<int32_t>(ps.alive.begin(), ps.alive.end());
+    const Totals t = sim.totals();
+    s.extra = {{"dt_us", sim.lastDt()},
+               {"initial_energy_J", sim.initialEnergy()},
+               {"deleted_energy_J", t.deletedEnergy},
+               {"deleted_mass_mg", t.deletedMass},
+               {"deleted_momentum_z", t.deletedMomentumZ},
+               {"runaway_deleted", sim.runawayDeleted()},
+               {"out_of_domain_deleted", sim.outOfDomainDeleted()},
+               {"max_energy_error", maxEnergyError},
+               {"particle_count", ps.size()}};
+    return s;
+}
+
+void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
+    auto& ps = sim.particles();
+    if (s.extra.value("particle_count", std::size_t{0}) != ps.size()) {
+        throw InputError("<checkpoint>", "/particle_count",
+                         "the checkpoint holds " +
+                             std::to_string(s.extra.value("particle_count", std::size_t{0})) +
+                             " particles, the scene makes " + std::to_string(ps.size()),
+                         "a checkpoint of the same scene and resolution");
+    }
+    auto take = [&](const char* name, std::vector<double>& into) {
+        auto it = s.doubles.find(name);
+        if (it == s.doubles.end() || it->second.size() != into.size()) {
+            throw InputError("<checkpoint>", std::string("/") + name, "missing or wrong size",
+                             "a checkpoint written by this version of hvi-run");
+        }
+        into = it->second;
+    };
+    take("z", ps.z);
+    take("r", ps.r);
+    take("vz", ps.vz);
+    take("vr", ps.vr);
+    take("mass", ps.mass);
+    take("h", ps.h);
+    take("rho", ps.rho);
+    take("e", ps.e);
+    if (ps.hasStrength()) {
+        take("szz", ps.szz);
+        take("srr", ps.srr);
+        take("srz", ps.srz);
+        take("plastic_strain", ps.plasticStrain);
+        take("damage", ps.damage);
+    }
+    const auto& alive = s.ints.at("alive");
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+        ps.alive[i] = static_cast<uint8_t>(alive[i]);
+    }
+    sim.restoreClock(s.timeUs, s.step, s.extra.at("dt_us"), s.extra.at("initial_energy_J"),
+                     s.extra.at("deleted_energy_J"), s.extra.at("deleted_mass_mg"),
+                     s.extra.at("deleted_momentum_z"), s.extra.at("runaway_deleted"),
+                     s.extra.at("out_of_domain_deleted"));
+}
+
+RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
+                           const std::string& materialsText, const nlohmann::json& provenance,
+                           const RunOptions& options,
+                           const std::function<void(const std::string&)>& log) {
+    const scene::Scene& scene = sim.scene();
+    const auto t0 = Clock::now();
+    RunSummary summary;
+    summary.particles = sim.particles().size();
+    const auto checkpointPath = io::checkpointPathFor(options.runFile);
+
+    io::RunFileWriter writer(options.runFile, sceneText, materialsText, provenance);
+    double nextSnapshot = 0.0;
+    if (options.resume && std::filesystem::exists(checkpointPath)) {
+        const io::CheckpointState state = io::readCheckpoint(checkpointPath);
+        restoreCheckpoint(sim, state);
+        summary.maxEnergyError = state.extra.value("max_energy_error", 0.0);
+        summary.resumed = true;
+        // Carry the snapshots and history of the interrupted run into the new file.
+        if (std::filesystem::exists(options.runFile)) {
+            io::RunFileReader previous(options.runFile);
+            for (std::size_t k = 0; k < previous.snapshots().size(); ++k) {
+                auto snap = previous.readSnapshot(static_cast<int>(k));
+                if (snap.info.timeUs <= state.timeUs + 1e-12) {
+                    writer.writeSnapshot(snap.info.timeUs, snap.info.step,
+                                         io::viewOf(snap.particles));
+                    nextSnapshot = snap.info.timeUs + scene.output.snapshotEvery;
+                }
+            }
+            const io::HistoryColumns h = previous.readHistory();
+            for (std::size_t k = 0; k < h.timeUs.size(); ++k) {
+                if (h.timeUs[k] <= state.timeUs + 1e-12) {
+                    io::HistoryRow row;
+                    row.timeUs = h.timeUs[k];
+                    row.dtUs = h.dtUs[k];
+                    row.step = h.step[k];
+                    row.kineticEnergy = h.kineticEnergy[k];
+                    row.internalEnergy = h.internalEnergy[k];
+                    row.totalEnergy = h.totalEnergy[k];
+                    row.energyError = h.energyError[k];
+                    row.deletedEnergy = h.deletedEnergy[k];
+                    row.mass = h.mass[k];
+                    row.momentumZ = h.momentumZ[k];
+                    row.aliveCount = h.aliveCount[k];
+                    row.deletedCount = h.deletedCount[k];
+                    row.activeCount = h.activeCount[k];
+                    writer.appendHistory(row);
+                }
+            }
+        }
+        log("resumed from " + checkpointPath.string() + " at t = " +
+            std::to_string(sim.time()) + " us, step " + std::to_string(sim.step()));
+    }
+
+    std::vector<double> deviator;
+    long lastSnapshotStep = -1;
+    auto snapshot = [&]() {
+        writer.writeSnapshot(sim.time(), sim.step(), viewOf(sim.particles(), deviator));
+        lastSnapshotStep = sim.step();
+    };
+    auto record = [&]() {
+        const io::HistoryRow row = historyRow(sim);
+        summary.maxEnergyError = std::max(summary.maxEnergyError, std::fabs(row.energyError));
+        writer.appendHistory(row);
+    };
+    if (!summary.resumed) {
+        snapshot();
+        record();
+        nextSnapshot = scene.output.snapshotEvery;
+    }
+    auto lastProgress = Clock::now();
+    auto lastCheckpoint = Clock::now();
+    const long startStep = sim.step();
+    const double startTime = sim.time();
+    std::optional<std::string> reason;
+    while (!(reason = sim.stopReason())) {
+        if (g_stopRequested.load()) {
+            break;
+        }
+        sim.advance();
+        summary.particleSteps += static_cast<double>(sim.aliveCount());
+        summary.activeParticleSteps += static_cast<double>(sim.activeCount());
+        if (sim.step() % scene.output.historyEverySteps == 0) {
+            record();
+        }
+        if (sim.time() >= nextSnapshot - 1e-12) {
+            snapshot();
+            nextSnapshot += scene.output.snapshotEvery;
+        }
+        if (!options.quiet && secondsSince(lastProgress) >= 1.0) {
+            lastProgress = Clock::now();
+            const double wall = secondsSince(t0);
+            const double rate = (sim.time() - startTime) / std::max(wall, 1e-9);
+            const double eta = rate > 0 ? (scene.run.endTime - sim.time()) / rate : NAN;
+            char line[384];
+            const int32_t lim = sim.dtLimitingParticle();
+            std::string limiter = "-";
+            if (lim >= 0) {
+                const auto& ps = sim.particles();
+                char buf[128];
+                std::snprintf(buf, sizeof buf, "%s #%d (z %.3f r %.3f mm)",
+                              scene.bodies[static_cast<std::size_t>(ps.body[lim])].name.c_str(),
+                              lim, ps.z[lim], ps.r[lim]);
+                limiter = buf;
+            }
+            std::snprintf(line, sizeof line,
+                          "t %.4f/%.3f us  dt %.2e us (%s)  particles %zu active/%zu  wall %s  "
+                          "ETA <= %s  energy error %+.2e",
+                          sim.time(), scene.run.endTime, sim.lastDt(), limiter.c_str(),
+                          sim.activeCount(), summary.particles, formatDuration(wall).c_str(),
+                          formatDuration(eta).c_str(), sim.energyError());
+            log(line);
+        }
+        if (options.checkpointEverySeconds > 0 &&
+            secondsSince(lastCheckpoint) >= options.checkpointEverySeconds) {
+            writer.flush();
+            io::writeCheckpoint(checkpointPath, checkpointOf(sim, summary.maxEnergyError));
+            lastCheckpoint = Clock::now();
+        }
+    }
+    summary.steps = sim.step() - startStep;
+    summary.timeUs = sim.time();
+    summary.wallSeconds = secondsSince(t0);
+    record();
+    if (lastSnapshotStep != sim.step()) {
+        snapshot(); // the final state, unless it was just written
+    }
+    const Totals t = sim.totals();
+    nlohmann::json facts = {{"wall_time_s", summary.wallSeconds},
+                            {"threads", options.threads},
+                            {"steps", sim.step()},
+                            {"end_time_us", sim.time()},
+                            {"particles", summary.particles},
+                            {"alive_particles", t.alive},
+                            {"deleted_runaway", sim.runawayDeleted()},
+                            {"deleted_out_of_domain", sim.outOfDomainDeleted()},
+                            {"max_abs_energy_error", summary.maxEnergyError},
+                            {"particle_spacing_mm", scene.sph.particleSpacing},
+                            {"resumed", summary.resumed},
+                            {"particle_steps_per_s",
+                             summary.particleSteps / std::max(summary.wallSeconds, 1e-9)}};
+    if (reason) {
+        summary.stopReason = *reason;
+        summary.complete = true;
+        facts["stop_reason"] = *reason;
+        writer.finish(facts);
+        std::error_code ignored;
+        std::filesystem::remove(checkpointPath, ignored);
+    } else {
+        summary.stopReason = "interrupted";
+        facts["stop_reason"] = "interrupted";
+        io::writeCheckpoint(checkpointPath, checkpointOf(sim, summary.maxEnergyError));
+        writer.abandon(facts);
+        log("interrupted at t = " + std::to_string(sim.time()) + " us; checkpoint " +
+            checkpointPath.string() + " (continue with --resume)");
+    }
+    return summary;
+}
+
+} // namespace hvi::solver

@@ -1,0 +1,86 @@
+// hvi-run from the command line: a small scene runs to its stop rule and leaves a run file
+// and an XDMF sidecar; bad scenes give exit 2, a pointer and no output; --benchmark prints
+// throughput.
+#include "RunTool.hpp"
+#include "io/RunFileReader.hpp"
+
+#include <filesystem>
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace hvi::test;
+
+namespace {
+const char* kScene = R"({"id": "cli-small", "geometry": "axisymmetric",
+  "sph": {"particle_spacing_mm": 0.08},
+  "run": {"end_time_us": 0.3, "stop_debris_speed_km_s": 0, "stop_no_new_penetration_us": 0},
+  "output": {"snapshot_every_us": 0.1},
+  "domain": {"radius_mm": 3.5},
+  "bodies": [
+    {"name": "ball", "role": "projectile", "material": "Al6061-T6",
+     "shape": {"type": "sphere", "center_z_mm": -0.6, "radius_mm": 0.5},
+     "velocity": {"z_km_s": 3.0}},
+    {"name": "plate", "role": "bumper", "material": "Al6061-T6",
+     "shape": {"type": "plate", "z_front_mm": 0.0, "thickness_mm": 0.5, "outer_radius_mm": 3.0}}
+  ]})";
+} // namespace
+
+TEST(HviRunCli, SmallSceneWritesRunFileAndSidecar) {
+    const auto scene = writeTemp("small.json", kScene);
+    const auto run = tempPath("small.h5");
+    std::filesystem::remove(run);
+    const auto r = runTool("hvi-run", scene.string() + " -o " + run.string() + " --threads 1");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("end_time"), std::string::npos) << r.err;
+    ASSERT_TRUE(std::filesystem::exists(run));
+    EXPECT_TRUE(std::filesystem::exists(tempPath("small.xmf")));
+    hvi::io::RunFileReader reader(run.string());
+    EXPECT_GE(reader.snapshots().size(), 4u); // t = 0, 0.1, 0.2, 0.3
+    EXPECT_EQ(reader.runFacts()["stop_reason"], "end_time");
+    EXPECT_EQ(reader.scene()["id"], "cli-small");
+    const auto history = reader.readHistory();
+    ASSERT_FALSE(history.energyError.empty());
+    EXPECT_LT(std::fabs(history.energyError.back()), 0.01);
+}
+
+TEST(HviRunCli, BadScenesAreRejectedWithoutOutput) {
+    struct Case {
+        const char* name;
+        std::string text;
+        const char* pointer;
+    };
+    std::string unknownMaterial = kScene;
+    unknownMaterial.replace(unknownMaterial.find("\"Al6061-T6\""), 11, "\"Unobtainium\"");
+    std::string negative = kScene;
+    negative.replace(negative.find("\"radius_mm\": 0.5"), 16, "\"radius_mm\": -0.5");
+    std::string unknownKey = kScene;
+    unknownKey.replace(unknownKey.find("\"end_time_us\""), 13, "\"end_tme_us\"");
+    const Case cases[] = {{"unknown-material", unknownMaterial, "/bodies/0/material"},
+                          {"negative", negative, "/bodies/0/shape/radius_mm"},
+                          {"unknown-key", unknownKey, "/run/end_tme_us"}};
+    for (const auto& c : cases) {
+        const auto scene = writeTemp(std::string(c.name) + ".json", c.text);
+        const auto run = tempPath(std::string(c.name) + ".h5");
+        std::filesystem::remove(run);
+        const auto r = runTool("hvi-run", scene.string() + " -o " + run.string());
+        EXPECT_EQ(r.exitCode, 2) << c.name << ": " << r.err;
+        EXPECT_NE(r.err.find(std::string(": ") + c.pointer + ": "), std::string::npos)
+            << c.name << ": " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(run)) << c.name;
+    }
+}
+
+TEST(HviRunCli, BenchmarkPrintsThroughput) {
+    const auto r = runTool("hvi-run", "--benchmark --resolution-mm 0.1 --benchmark-steps 5 "
+                                      "--threads 1");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("particle-steps/s"), std::string::npos) << r.out;
+}
+
+TEST(HviRunCli, HelpVersionSchema) {
+    EXPECT_EQ(runTool("hvi-run", "--help").exitCode, 0);
+    EXPECT_EQ(runTool("hvi-run", "--version").exitCode, 0);
+    const auto schema = runTool("hvi-run", "--print-schema");
+    EXPECT_EQ(schema.exitCode, 0);
+    EXPECT_NE(schema.out.find("particle_spacing_mm"), std::string::npos);
+}
