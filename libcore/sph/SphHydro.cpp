@@ -117,7 +117,12 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             double hoopRate = 0.0;
             if (axi) {
                 const double grz = 2.0 * gz / rhoi, grr = 2.0 * gr / rhoi;
-                hoopRate = vri / ri; // exact: d(ln 2 pi r)/dt
+                // D_thth = v_r / r, the exact rate of a ring's circumference, except where the
+                // neighbourhood cannot hold a hoop stress (g_r < 1/r: a particle with few
+                // neighbours, e.g. a lone debris particle near the axis): there it follows
+                // the hoop force's g_r, so a ring cannot be compressed by converging motion
+                // that no hoop stress resists.
+                hoopRate = vri * std::min(std::max(grr, 0.0), 1.0 / ri);
                 const double sThTh = strength ? -(ps.szz[i] + ps.srr[i]) : 0.0;
                 const double sigmaThTh = sThTh - ps.p[i];
                 // The radial hoop force, and the removal of the spurious axial part of the
