@@ -28,6 +28,7 @@ void ParticleSet::add(double zMm, double rMm, double vzKmS, double vrKmS, double
 }
 
 void ParticleSet::enableStrength() {
+    m_withStrength = true;
     const std::size_t n = size();
     szz.assign(n, 0.0);
     srr.assign(n, 0.0);

@@ -33,15 +33,18 @@ struct ParticleSet {
     std::vector<double> plasticStrain; ///< equivalent plastic strain [-]
     std::vector<double> damage;        ///< Johnson-Cook damage D in [0, 1] [-]
 
-    bool hasStrength() const { return !szz.empty(); }
+    bool hasStrength() const { return m_withStrength; }
     std::size_t size() const { return z.size(); }
 
     /// Appends one particle at rest state (strength arrays follow `withStrength`).
     void add(double zMm, double rMm, double vzKmS, double vrKmS, double massMg, double hMm,
              double rhoGcc, double eMJkg, int32_t bodyIndex);
 
-    /// Allocates the strength arrays (zero) for every particle.
+    /// Allocates the strength arrays (zero) for every particle, present and added later.
     void enableStrength();
+
+private:
+    bool m_withStrength = false;
 };
 
 /// Time derivatives of the evolved fields, filled by the physics packages.
