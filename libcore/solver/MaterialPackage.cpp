@@ -1,4 +1,5 @@
 #include "solver/MaterialPackage.hpp"
+#include "core/Parallel.hpp"
 
 #include "material/strength/JaumannRate.hpp"
 #include "material/strength/RadialReturn.hpp"
@@ -18,7 +19,7 @@ void MaterialPackage::updatePressure(sph::ParticleSet& ps) const {
             [&](const auto& eos) {
                 const auto first = static_cast<std::ptrdiff_t>(body.first);
                 const auto last = static_cast<std::ptrdiff_t>(body.first + body.count);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body.count > kParallelMinItems)
                 for (std::ptrdiff_t k = first; k < last; ++k) {
                     const auto i = static_cast<std::size_t>(k);
                     if (!ps.alive[i]) {
@@ -52,7 +53,7 @@ void MaterialPackage::addStressRates(const sph::ParticleSet& ps,
         return;
     }
     const std::size_t count = active.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
     for (std::size_t a = 0; a < count; ++a) {
         const int32_t i = active[a];
         const BodyMaterial& body = m_bodies[static_cast<std::size_t>(ps.body[i])];
@@ -77,7 +78,7 @@ void MaterialPackage::applyPlasticity(sph::ParticleSet& ps, const sph::ParticleR
         return;
     }
     const std::size_t count = active.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
     for (std::size_t a = 0; a < count; ++a) {
         const int32_t i = active[a];
         const BodyMaterial& body = m_bodies[static_cast<std::size_t>(ps.body[i])];

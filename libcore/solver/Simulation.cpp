@@ -1,4 +1,5 @@
 #include "solver/Simulation.hpp"
+#include "core/Parallel.hpp"
 
 #include "core/Error.hpp"
 
@@ -135,7 +136,7 @@ void Simulation::advance() {
     }
     auto& rt = m_rates;
     // Half kick with the rates of the start of the step, drift, predict the end state.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
     for (std::size_t i = 0; i < n; ++i) {
         if (!ps.alive[i]) {
             continue;
@@ -175,7 +176,7 @@ void Simulation::advance() {
 
     // Second half kick with the rates of the predicted end state.
     const auto& bodies = m_materials->bodies();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
     for (std::size_t i = 0; i < n; ++i) {
         if (!ps.alive[i]) {
             continue;

@@ -1,4 +1,5 @@
 #include "sph/NeighbourSearch.hpp"
+#include "core/Parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -173,7 +174,7 @@ void buildNeighbourList(const ParticleSet& ps, const NeighbourSearchOptions& opt
     std::vector<std::vector<int32_t>> threadNeighbours(threads);
     std::vector<int64_t> counts(activeCount, 0);
     const double kappa = options.kernelSupport;
-#pragma omp parallel
+#pragma omp parallel if (activeCount > kParallelMinItems)
     {
         auto& local = threadNeighbours[omp_get_thread_num()];
 #pragma omp for schedule(static)

@@ -1,4 +1,5 @@
 #include "sph/SphHydro.hpp"
+#include "core/Parallel.hpp"
 
 #include "core/Units.hpp"
 
@@ -34,7 +35,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
     // Thread-local vote, combined in a fixed order afterwards (min is order-independent,
     // ties broken by the lowest particle index, so the result is thread-count independent).
     std::vector<StepVote> threadVotes(static_cast<std::size_t>(omp_get_max_threads()));
-#pragma omp parallel
+#pragma omp parallel if (activeCount > kParallelMinItems)
     {
         StepVote local;
 #pragma omp for schedule(static)
@@ -186,7 +187,7 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list,
     const bool axi = m_options.axisymmetric;
     const double inv2Pi = 1.0 / (2.0 * units::kPi);
     const bool strength = ps.hasStrength();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
     for (std::size_t i = 0; i < n; ++i) {
         const double inv = 1.0 / (ps.rho[i] * ps.rho[i]);
         const double szz = strength ? ps.szz[i] : 0.0;

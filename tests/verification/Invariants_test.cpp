@@ -7,6 +7,7 @@
 // total energy (compatible energy equation; leapfrog truncation error only).
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
+#include "core/Parallel.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -41,6 +42,7 @@ struct Outcome {
     double momentumDrift = 0.0, maxEnergyError = 0.0, massDrift = 0.0;
     std::size_t deleted = 0;
     double activeFraction = 1.0;
+    std::size_t maxActive = 0;
 };
 
 Outcome run(double spacing, bool skipDormant, int threads,
@@ -57,6 +59,7 @@ Outcome run(double spacing, bool skipDormant, int threads,
     test::runUntil(sim, 0.3, [&](const solver::Simulation& s) {
         out.maxEnergyError = std::max(out.maxEnergyError, std::fabs(s.energyError()));
         activeSum += static_cast<double>(s.activeCount()) / static_cast<double>(s.aliveCount());
+        out.maxActive = std::max(out.maxActive, s.activeCount());
         ++steps;
     });
     const auto t1 = sim.totals();
@@ -88,6 +91,8 @@ TEST(Invariants, DormantSkippingIsExact) {
 TEST(Invariants, OneAndTwoThreadsAgreeBitwise) {
     const Outcome one = run(0.05, true, 1);
     const Outcome two = run(0.05, true, 2);
+    // Loops go parallel only above kParallelMinItems: the scene must get there.
+    EXPECT_GT(two.maxActive, hvi::kParallelMinItems);
     EXPECT_EQ(one.z, two.z);
     EXPECT_EQ(one.vz, two.vz);
     EXPECT_EQ(one.e, two.e);
