@@ -256,7 +256,16 @@ void BleSizeTool::execute() {
     }
     if (!quiet() && sizing.contains("thesis_workflow")) {
         const auto& s = sizing["thesis_workflow"]["initial_standoff"];
-        info("initial standoff (thesis eq 29): " + s["message"].get<std::string>());
+        char buf[256];
+        if (s["status"] == "solved") {
+            std::snprintf(buf, sizeof buf,
+                          "initial standoff (thesis eq 29): S_initial = %.2f mm with %.3f mm "
+                          "plates (even split of the panel's mass)",
+                          s["standoff_mm"].get<double>(), s["plate_mm"].get<double>());
+            info(buf);
+        } else {
+            info("initial standoff (thesis eq 29): " + s["message"].get<std::string>());
+        }
     }
 }
 
