@@ -147,10 +147,8 @@ Scene parseScene(const json& document, const std::string& file,
     scene.sph.smoothingLengthFactor = sph.at("smoothing_length_factor");
     scene.sph.avAlpha = sph.at("av_alpha");
     scene.sph.avBeta = sph.at("av_beta");
-    scene.sph.artificialStress = sph.at("artificial_stress");
     scene.sph.minDensityRatio = sph.at("min_density_ratio");
     scene.sph.runawaySpeedFactor = sph.at("runaway_speed_factor");
-    scene.sph.xsph = sph.at("xsph");
 
     const json& fe = doc.at("fe");
     scene.fe.elementSize = fe.value("element_size_mm", scene.sph.particleSpacing);

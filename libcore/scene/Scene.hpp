@@ -54,10 +54,8 @@ struct SphControls {
     std::string kernel = "cubic_spline";
     double smoothingLengthFactor = 1.3;
     double avAlpha = 1.0, avBeta = 2.0;
-    double artificialStress = 0.0;
     double minDensityRatio = 0.5;
     double runawaySpeedFactor = 2.0;
-    double xsph = 0.0;
 };
 
 struct FeControls {
