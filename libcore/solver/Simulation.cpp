@@ -37,9 +37,6 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     if (!issues.empty()) {
         throw InputError(std::move(issues));
     }
-    if (anyStrength) {
-        m_particles.enableStrength();
-    }
     std::vector<BodyMaterial> bodyMaterials;
     m_minSpacing = std::numeric_limits<double>::infinity();
     for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
@@ -56,6 +53,11 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         bm.count = m_fills.back().count;
         bodyMaterials.push_back(bm);
         m_minSpacing = std::min(m_minSpacing, m_fills.back().spacing);
+    }
+    // After the fill: ParticleSet::hasStrength() is "the strength arrays are non-empty", so
+    // enabling strength on the still-empty set (as before) left every scene strengthless.
+    if (anyStrength) {
+        m_particles.enableStrength();
     }
     m_materials = std::make_unique<MaterialPackage>(std::move(bodyMaterials));
 

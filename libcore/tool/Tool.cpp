@@ -60,7 +60,7 @@ int Tool::run(int argc, char** argv) {
             return static_cast<int>(ExitCode::Ok);
         }
         execute();
-        return static_cast<int>(ExitCode::Ok);
+        return static_cast<int>(m_checkFailed ? ExitCode::CheckFailed : ExitCode::Ok);
     } catch (const InputError& e) {
         for (const auto& issue : e.issues()) {
             std::cerr << m_name << ": " << issue.format() << "\n";

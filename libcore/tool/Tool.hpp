@@ -38,6 +38,9 @@ protected:
     void warn(const std::string& message) const;
     /// "tool: message" on stderr unless --quiet.
     void info(const std::string& message) const;
+    /// Marks a requested check as failed (hvi-assess --expect): execute() still finishes
+    /// and writes its outputs, and run() then returns ExitCode::CheckFailed (1).
+    void setCheckFailed() { m_checkFailed = true; }
 
     /// The provenance block every output carries: tool, version, input, resolved input.
     nlohmann::json provenance(const std::string& inputFile,
@@ -48,6 +51,7 @@ private:
     std::string m_summary;
     bool m_quiet = false;
     bool m_printSchema = false;
+    bool m_checkFailed = false;
 };
 
 /// The version line printed by --version and recorded in outputs.
