@@ -54,8 +54,8 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         bodyMaterials.push_back(bm);
         m_minSpacing = std::min(m_minSpacing, m_fills.back().spacing);
     }
-    // After the fill: ParticleSet::hasStrength() is "the strength arrays are non-empty", so
-    // enabling strength on the still-empty set (as before) left every scene strengthless.
+    // Strength arrays for every particle of every body (ParticleSet keeps an explicit flag,
+    // so the order relative to the fill does not matter).
     if (anyStrength) {
         m_particles.enableStrength();
     }
