@@ -4,9 +4,9 @@
 // 3 % at 0.015 mm in Autodyn. Run through the whole chain: simulation -> run file ->
 // hvi-assess's metric -> --expect comparison.
 //
-// Slow (minutes at 0.05 mm, hours at the calibrated 0.015 mm): DISABLED_ by default; run with
-//   HVI_UM_SPACING_MM=0.05 build/tests/test_verification_BumperHoleUm3125
-//       --gtest_also_run_disabled_tests   (one command line)
+// CI runs the coarse version (0.05 mm, about 30 s on one core; measured 7.02 mm, +4.8 %,
+// issue #4 asks for 15 % here). Finer spacings (minutes at 0.03 mm, hours at the calibrated
+// 0.015 mm): HVI_UM_SPACING_MM=0.03 build/tests/test_verification_BumperHoleUm3125
 #include "SimulationRunFile.hpp"
 #include "TestPaths.hpp"
 #include "assess/Assessment.hpp"
@@ -20,7 +20,7 @@
 using namespace hvi;
 using nlohmann::json;
 
-TEST(BumperHoleUm3125, DISABLED_HoleAgainstTheMeasurement) {
+TEST(BumperHoleUm3125, HoleAgainstTheMeasurement) {
     const char* env = std::getenv("HVI_UM_SPACING_MM");
     const double spacing = env ? std::atof(env) : 0.05;
     const double radius = 0.5 * 3.125;
