@@ -55,8 +55,8 @@ struct ShieldLayout {
     bool isTarget(std::size_t body) const; ///< any body but a projectile
 };
 
-/// Builds the layout from the run's parsed scene and its first snapshot. `file` names the run
-/// file in errors.
+/// Builds the layout from the run's parsed scene and its first snapshot (whose body ids must
+/// already be checked against the scene).
 ShieldLayout shieldLayout(const scene::Scene& scene, const io::Snapshot& first);
 
 /// Parses /scene of a run file (validated as hvi-run validated it, with the scene's own
