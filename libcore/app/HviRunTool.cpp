@@ -1,6 +1,7 @@
 #include "app/HviRunTool.hpp"
 
 #include "app/BuiltinCases.hpp"
+#include "geometry/GmshMesher.hpp"
 #include "io/JsonInput.hpp"
 #include "scene/Scene.hpp"
 #include "solver/RunLoop.hpp"
@@ -22,8 +23,9 @@ extern "C" void onSignal(int) { solver::g_stopRequested.store(true); }
 } // namespace
 
 HviRunTool::HviRunTool()
-    : tool::Tool("hvi-run", "2D axisymmetric SPH simulation of a hypervelocity impact "
-                            "(Mie-Grueneisen EOS, Johnson-Cook strength and failure)") {}
+    : tool::Tool("hvi-run", "2D axisymmetric SPH + finite-element simulation of a "
+                            "hypervelocity impact (Mie-Grueneisen EOS, Johnson-Cook strength "
+                            "and failure, erosion, contact)") {}
 
 void HviRunTool::addOptions(CLI::App& app) {
     app.add_option("scene", m_scene, "Scene JSON (from foam2layers/hcomb2rings or by hand)")
@@ -58,39 +60,77 @@ void HviRunTool::addOptions(CLI::App& app) {
 
 void HviRunTool::benchmark() {
     const double spacing = m_resolution > 0.0 ? m_resolution : 0.015;
-    const json doc = bumperCaseScene(spacing);
     const auto library = solver::sceneLibrary(json::object(), "<builtin>");
-    const scene::Scene scene = scene::parseScene(doc, "<benchmark>", library.names());
-    const auto tSetup = std::chrono::steady_clock::now();
-    solver::Simulation sim(scene, library);
-    const double setup =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - tSetup).count();
-    // Warm-up: the first contact, so the timed steps see a developed impact.
-    for (int k = 0; k < 20; ++k) {
-        sim.advance();
+    // Two scenes: the all-SPH bumper case, and the same with the bumper as finite elements
+    // (the element throughput; FE time only, contact reported apart).
+    for (const bool feBumper : {false, true}) {
+        json doc = bumperCaseScene(spacing);
+        if (feBumper) {
+            doc["bodies"][1]["discretization"] = "fe";
+        }
+        const scene::Scene scene = scene::parseScene(doc, "<benchmark>", library.names());
+        const auto tSetup = std::chrono::steady_clock::now();
+        solver::Simulation sim(scene, library);
+        const double setup =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - tSetup).count();
+        // Warm-up: the first contact, so the timed steps see a developed impact.
+        for (int k = 0; k < 20; ++k) {
+            sim.advance();
+        }
+        double particleSteps = 0.0, activeSteps = 0.0, pairs = 0.0, elementSteps = 0.0;
+        const auto before = sim.packageSeconds();
+        const auto t0 = std::chrono::steady_clock::now();
+        for (long k = 0; k < m_benchmarkSteps; ++k) {
+            sim.advance();
+            particleSteps += static_cast<double>(sim.aliveCount());
+            activeSteps += static_cast<double>(sim.activeCount());
+            pairs += static_cast<double>(sim.pairCount());
+            if (sim.finiteElements()) {
+                elementSteps += static_cast<double>(sim.finiteElements()->evaluatedCount());
+            }
+        }
+        const double wall =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const auto after = sim.packageSeconds();
+        char line[768];
+        if (!feBumper) {
+            std::snprintf(
+                line, sizeof line,
+                "benchmark: bumper case, spacing %.4f mm, %zu particles, %d threads, %ld steps "
+                "in %.2f s (setup %.2f s)\n"
+                "  particle-steps/s (all particles):    %.3e\n"
+                "  particle-steps/s (active particles): %.3e  (%.0f %% of particles active)\n"
+                "  neighbour pairs per active particle: %.1f\n"
+                "  simulated %.4f us, mean dt %.3e us, energy error %+.2e\n",
+                spacing, sim.particles().size(), omp_get_max_threads(), m_benchmarkSteps, wall,
+                setup, particleSteps / wall, activeSteps / wall,
+                100.0 * activeSteps / std::max(particleSteps, 1.0),
+                pairs / std::max(activeSteps, 1.0), sim.time(),
+                sim.time() / static_cast<double>(sim.step()), sim.energyError());
+        } else {
+            const double feSeconds = after.fe - before.fe;
+            const double contactSeconds = after.contact - before.contact;
+            const double sphSeconds = after.sph - before.sph;
+            std::snprintf(
+                line, sizeof line,
+                "benchmark: SPH projectile on an FE bumper, %zu particles, %zu elements, %d "
+                "threads, %ld steps in %.2f s (setup %.2f s)\n"
+                "  element-steps/s (evaluated elements, FE time %.2f s): %.3e  (%.0f elements "
+                "evaluated per step)\n"
+                "  particle-steps/s (all particles, SPH time %.2f s):     %.3e\n"
+                "  contact: %.2f s (%.0f %% of the step)\n"
+                "  simulated %.4f us, mean dt %.3e us, energy error %+.2e, %zu elements eroded\n",
+                sim.particles().size(), sim.finiteElements()->elements().size(),
+                omp_get_max_threads(), m_benchmarkSteps, wall, setup, feSeconds,
+                elementSteps / std::max(feSeconds, 1e-12),
+                elementSteps / static_cast<double>(m_benchmarkSteps), sphSeconds,
+                particleSteps / std::max(sphSeconds, 1e-12), contactSeconds,
+                100.0 * contactSeconds / wall, sim.time(),
+                sim.time() / static_cast<double>(sim.step()), sim.energyError(),
+                sim.finiteElements()->erodedCount());
+        }
+        std::cout << line << std::flush;
     }
-    double particleSteps = 0.0, activeSteps = 0.0, pairs = 0.0;
-    const auto t0 = std::chrono::steady_clock::now();
-    for (long k = 0; k < m_benchmarkSteps; ++k) {
-        sim.advance();
-        particleSteps += static_cast<double>(sim.aliveCount());
-        activeSteps += static_cast<double>(sim.activeCount());
-        pairs += static_cast<double>(sim.pairCount());
-    }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "benchmark: bumper case, spacing %.4f mm, %zu particles, %d threads, %ld steps "
-                  "in %.2f s (setup %.2f s)\n"
-                  "  particle-steps/s (all particles):    %.3e\n"
-                  "  particle-steps/s (active particles): %.3e  (%.0f %% of particles active)\n"
-                  "  neighbour pairs per active particle: %.1f\n"
-                  "  simulated %.4f us, mean dt %.3e us, energy error %+.2e\n",
-                  spacing, sim.particles().size(), omp_get_max_threads(), m_benchmarkSteps, wall,
-                  setup, particleSteps / wall, activeSteps / wall,
-                  100.0 * activeSteps / std::max(particleSteps, 1.0), pairs / std::max(activeSteps, 1.0),
-                  sim.time(), sim.time() / static_cast<double>(sim.step()), sim.energyError());
-    std::cout << line;
 }
 
 void HviRunTool::execute() {
@@ -152,6 +192,22 @@ void HviRunTool::execute() {
     const int threads = omp_get_max_threads();
     json prov = provenance(m_scene, scene.resolved);
     prov["threads"] = threads;
+    if (const fe::FeSolid* fe = sim.finiteElements()) {
+        // The FE mesh beside the run, for inspection in gmsh (the same structured grid).
+        std::vector<geometry::MeshRectangle> rectangles;
+        for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+            const auto& body = scene.bodies[b];
+            if (body.discretization == scene::Discretization::Fe) {
+                rectangles.push_back({body.name, body.shape.boundZMin(), body.shape.boundZMax(),
+                                      body.shape.boundRMin(), body.shape.boundRMax(),
+                                      body.spacing});
+            }
+        }
+        const auto meshPath = std::filesystem::path(output).replace_extension(".msh");
+        geometry::GmshMesher::write(rectangles, meshPath);
+        info("FE mesh: " + std::to_string(fe->nodes().size()) + " nodes, " +
+             std::to_string(fe->elements().size()) + " elements; written to " + meshPath.string());
+    }
     info("scene '" + scene.id + "': " + std::to_string(sim.particles().size()) + " particles, " +
          std::to_string(scene.bodies.size()) + " bodies, spacing " +
          std::to_string(scene.sph.particleSpacing) + " mm, " + std::to_string(threads) +

@@ -1,8 +1,11 @@
 #include "solver/MaterialPackage.hpp"
 #include "core/Parallel.hpp"
 
+#include "fe/ElementRates.hpp"
+#include "fe/FeMesh.hpp"
 #include "material/strength/JaumannRate.hpp"
 #include "material/strength/RadialReturn.hpp"
+#include "sph/ParticleSet.hpp"
 
 #include <cmath>
 #include <variant>
@@ -11,7 +14,8 @@ namespace hvi::solver {
 
 using material::StressDeviator;
 
-void MaterialPackage::updatePressure(sph::ParticleSet& ps) const {
+template <class Points>
+void MaterialPackage::updatePressure(Points& ps) const {
     const bool hasS = ps.hasStrength();
     for (const auto& body : m_bodies) {
         const double shear = body.strength ? body.spec->shearModulus : 0.0;
@@ -46,9 +50,9 @@ void MaterialPackage::updatePressure(sph::ParticleSet& ps) const {
     }
 }
 
-void MaterialPackage::addStressRates(const sph::ParticleSet& ps,
-                                     const std::vector<int32_t>& active,
-                                     sph::ParticleRates& rates) const {
+template <class Points, class Rates>
+void MaterialPackage::addStressRates(const Points& ps, const std::vector<int32_t>& active,
+                                     Rates& rates) const {
     if (!ps.hasStrength()) {
         return;
     }
@@ -72,7 +76,8 @@ void MaterialPackage::addStressRates(const sph::ParticleSet& ps,
     }
 }
 
-void MaterialPackage::applyPlasticity(sph::ParticleSet& ps, const sph::ParticleRates& rates,
+template <class Points, class Rates>
+void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
                                       const std::vector<int32_t>& active) const {
     if (!ps.hasStrength()) {
         return;
@@ -126,5 +131,18 @@ void MaterialPackage::applyPlasticity(sph::ParticleSet& ps, const sph::ParticleR
         ps.srz[i] = s.rz;
     }
 }
+
+// The two kinds of material points.
+template void MaterialPackage::updatePressure(sph::ParticleSet&) const;
+template void MaterialPackage::updatePressure(fe::ElementSet&) const;
+template void MaterialPackage::addStressRates(const sph::ParticleSet&,
+                                              const std::vector<int32_t>&,
+                                              sph::ParticleRates&) const;
+template void MaterialPackage::addStressRates(const fe::ElementSet&, const std::vector<int32_t>&,
+                                              fe::ElementRates&) const;
+template void MaterialPackage::applyPlasticity(sph::ParticleSet&, const sph::ParticleRates&,
+                                               const std::vector<int32_t>&) const;
+template void MaterialPackage::applyPlasticity(fe::ElementSet&, const fe::ElementRates&,
+                                               const std::vector<int32_t>&) const;
 
 } // namespace hvi::solver

@@ -51,6 +51,28 @@ io::ParticleFieldsView viewOf(const sph::ParticleSet& ps, std::vector<double>& d
     return v;
 }
 
+/// The FE node and element fields, viewed from the FE package's arrays (the element state
+/// arrays that a strengthless scene lacks stay empty and are left out).
+io::FeFieldsView feViewOf(const fe::FeSolid& fe) {
+    io::FeFieldsView v;
+    const auto& nd = fe.nodes();
+    const auto& el = fe.elements();
+    v.nodes.z = nd.z;
+    v.nodes.r = nd.r;
+    v.nodes.vz = nd.vz;
+    v.nodes.vr = nd.vr;
+    v.nodes.mass = nd.mass;
+    v.elements.connectivity = el.connectivity;
+    v.elements.alive = el.alive;
+    v.elements.damage = el.damage;
+    v.elements.plasticStrain = el.plasticStrain;
+    v.elements.geometricStrain = el.geometricStrain;
+    v.elements.pressure = el.p;
+    v.elements.density = el.rho;
+    v.elements.bodyId = el.body;
+    return v;
+}
+
 io::HistoryRow historyRow(const Simulation& sim) {
     const Totals t = sim.totals();
     io::HistoryRow row;
@@ -104,6 +126,29 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
     }
     s.ints["body"] = ps.body;
     s.ints["alive"] = std::vector<int32_t>(ps.alive.begin(), ps.alive.end());
+    if (const fe::FeSolid* fe = sim.finiteElements()) {
+        const auto& nd = fe->nodes();
+        const auto& el = fe->elements();
+        s.doubles["node_z"] = nd.z;
+        s.doubles["node_r"] = nd.r;
+        s.doubles["node_vz"] = nd.vz;
+        s.doubles["node_vr"] = nd.vr;
+        s.doubles["node_fz"] = nd.fz;
+        s.doubles["node_fr"] = nd.fr;
+        s.ints["node_alive"] = std::vector<int32_t>(nd.alive.begin(), nd.alive.end());
+        s.doubles["element_rho"] = el.rho;
+        s.doubles["element_e"] = el.e;
+        s.doubles["element_q"] = el.q;
+        s.doubles["element_geometric_strain"] = el.geometricStrain;
+        s.ints["element_alive"] = std::vector<int32_t>(el.alive.begin(), el.alive.end());
+        if (el.hasStrength()) {
+            s.doubles["element_szz"] = el.szz;
+            s.doubles["element_srr"] = el.srr;
+            s.doubles["element_srz"] = el.srz;
+            s.doubles["element_plastic_strain"] = el.plasticStrain;
+            s.doubles["element_damage"] = el.damage;
+        }
+    }
     const Totals t = sim.totals();
     s.extra = {{"dt_us", sim.lastDt()},
                {"initial_energy_J", sim.initialEnergy()},
@@ -114,6 +159,12 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
                {"out_of_domain_deleted", sim.outOfDomainDeleted()},
                {"max_energy_error", maxEnergyError},
                {"particle_count", ps.size()}};
+    if (const fe::FeSolid* fe = sim.finiteElements()) {
+        s.extra["node_count"] = fe->nodes().size();
+        s.extra["element_count"] = fe->elements().size();
+        s.extra["eroded_energy_J"] = fe->erodedEnergy();
+        s.extra["eroded_elements"] = fe->erodedCount();
+    }
     return s;
 }
 
@@ -149,14 +200,54 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
         take("plastic_strain", ps.plasticStrain);
         take("damage", ps.damage);
     }
-    const auto& alive = s.ints.at("alive");
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-        ps.alive[i] = static_cast<uint8_t>(alive[i]);
+    auto takeFlags = [&](const char* name, std::vector<uint8_t>& into) {
+        auto it = s.ints.find(name);
+        if (it == s.ints.end() || it->second.size() != into.size()) {
+            throw InputError("<checkpoint>", std::string("/") + name, "missing or wrong size",
+                             "a checkpoint written by this version of hvi-run");
+        }
+        for (std::size_t i = 0; i < into.size(); ++i) {
+            into[i] = static_cast<uint8_t>(it->second[i]);
+        }
+    };
+    takeFlags("alive", ps.alive);
+    double erodedEnergy = 0.0;
+    std::size_t erodedCount = 0;
+    if (fe::FeSolid* fe = sim.finiteElements()) {
+        auto& nd = fe->nodes();
+        auto& el = fe->elements();
+        if (s.extra.value("node_count", std::size_t{0}) != nd.size() ||
+            s.extra.value("element_count", std::size_t{0}) != el.size()) {
+            throw InputError("<checkpoint>", "/node_count",
+                             "the checkpoint's FE mesh differs from the scene's",
+                             "a checkpoint of the same scene and resolution");
+        }
+        take("node_z", nd.z);
+        take("node_r", nd.r);
+        take("node_vz", nd.vz);
+        take("node_vr", nd.vr);
+        take("node_fz", nd.fz);
+        take("node_fr", nd.fr);
+        takeFlags("node_alive", nd.alive);
+        take("element_rho", el.rho);
+        take("element_e", el.e);
+        take("element_q", el.q);
+        take("element_geometric_strain", el.geometricStrain);
+        takeFlags("element_alive", el.alive);
+        if (el.hasStrength()) {
+            take("element_szz", el.szz);
+            take("element_srr", el.srr);
+            take("element_srz", el.srz);
+            take("element_plastic_strain", el.plasticStrain);
+            take("element_damage", el.damage);
+        }
+        erodedEnergy = s.extra.value("eroded_energy_J", 0.0);
+        erodedCount = s.extra.value("eroded_elements", std::size_t{0});
     }
     sim.restoreClock(s.timeUs, s.step, s.extra.at("dt_us"), s.extra.at("initial_energy_J"),
                      s.extra.at("deleted_energy_J"), s.extra.at("deleted_mass_mg"),
                      s.extra.at("deleted_momentum_z"), s.extra.at("runaway_deleted"),
-                     s.extra.at("out_of_domain_deleted"));
+                     s.extra.at("out_of_domain_deleted"), erodedEnergy, erodedCount);
 }
 
 RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
@@ -182,8 +273,14 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
             for (std::size_t k = 0; k < previous.snapshots().size(); ++k) {
                 auto snap = previous.readSnapshot(static_cast<int>(k));
                 if (snap.info.timeUs <= state.timeUs + 1e-12) {
-                    writer.writeSnapshot(snap.info.timeUs, snap.info.step,
-                                         io::viewOf(snap.particles));
+                    if (snap.fe) {
+                        const io::FeFieldsView feView = io::viewOf(*snap.fe);
+                        writer.writeSnapshot(snap.info.timeUs, snap.info.step,
+                                             io::viewOf(snap.particles), &feView);
+                    } else {
+                        writer.writeSnapshot(snap.info.timeUs, snap.info.step,
+                                             io::viewOf(snap.particles));
+                    }
                     nextSnapshot = snap.info.timeUs + scene.output.snapshotEvery;
                 }
             }
@@ -215,7 +312,13 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     std::vector<double> deviator;
     long lastSnapshotStep = -1;
     auto snapshot = [&]() {
-        writer.writeSnapshot(sim.time(), sim.step(), viewOf(sim.particles(), deviator));
+        if (const fe::FeSolid* fe = sim.finiteElements()) {
+            const io::FeFieldsView feView = feViewOf(*fe);
+            writer.writeSnapshot(sim.time(), sim.step(), viewOf(sim.particles(), deviator),
+                                 &feView);
+        } else {
+            writer.writeSnapshot(sim.time(), sim.step(), viewOf(sim.particles(), deviator));
+        }
         lastSnapshotStep = sim.step();
     };
     auto record = [&]() {
@@ -254,8 +357,8 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
             const double eta = rate > 0 ? (scene.run.endTime - sim.time()) / rate : NAN;
             char line[384];
             const int32_t lim = sim.dtLimitingParticle();
-            std::string limiter = "-";
-            if (lim >= 0) {
+            std::string limiter = sim.dtLimiter();
+            if (sim.dtLimiter() == "sph" && lim >= 0) {
                 const auto& ps = sim.particles();
                 char buf[128];
                 std::snprintf(buf, sizeof buf, "%s #%d (z %.3f r %.3f mm)",
@@ -294,6 +397,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
                             {"alive_particles", t.alive},
                             {"deleted_runaway", sim.runawayDeleted()},
                             {"deleted_out_of_domain", sim.outOfDomainDeleted()},
+                            {"eroded_elements", t.erodedElements},
                             {"max_abs_energy_error", summary.maxEnergyError},
                             {"particle_spacing_mm", scene.sph.particleSpacing},
                             {"resumed", summary.resumed},

@@ -4,6 +4,7 @@
 #include "core/Error.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -19,39 +20,63 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
                        SimulationOptions options)
     : m_scene(sceneIn), m_options(options) {
     const bool axi = m_scene.geometry == scene::Geometry::Axisymmetric;
-    std::vector<InputIssue> issues;
     m_specs.reserve(m_scene.bodies.size());
-    bool anyStrength = false;
-    for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
-        const auto& body = m_scene.bodies[b];
-        if (body.discretization == scene::Discretization::Fe) {
-            issues.push_back({"<scene>", "/bodies/" + std::to_string(b) + "/discretization",
-                              "finite-element bodies are not available in this version of "
-                              "hvi-run",
-                              "\"sph\" (foam2layers/hcomb2rings: --core-discretization sph)"});
-            continue;
-        }
+    bool anyStrength = false, anyFeStrength = false;
+    for (const auto& body : m_scene.bodies) {
         m_specs.push_back(library.get(body.material));
-        anyStrength = anyStrength || (body.strength && m_specs.back().hasStrength());
+        const bool strength = body.strength && m_specs.back().hasStrength();
+        if (body.discretization == scene::Discretization::Fe) {
+            anyFeStrength = anyFeStrength || strength;
+        } else {
+            anyStrength = anyStrength || strength;
+        }
     }
-    if (!issues.empty()) {
-        throw InputError(std::move(issues));
+    std::vector<BodyMaterial> bodyMaterials, elementMaterials;
+    std::vector<contact::ContactBody> contactBodies;
+    std::vector<double> erosionFactors;
+    fe::NodeSet nodes;
+    fe::ElementSet elements;
+    if (anyFeStrength) {
+        elements.enableStrength();
     }
-    std::vector<BodyMaterial> bodyMaterials;
     m_minSpacing = std::numeric_limits<double>::infinity();
     for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
         const auto& body = m_scene.bodies[b];
         const auto& spec = m_specs[b];
         const double rho0 = spec.referenceDensity;
-        m_fills.push_back(sph::fillBody(body, static_cast<int32_t>(b), rho0, 0.0,
-                                        m_scene.sph.smoothingLengthFactor, axi, m_particles));
         BodyMaterial bm;
         bm.spec = &m_specs[b];
         bm.strength = body.strength && spec.hasStrength();
         bm.minDensity = m_scene.sph.minDensityRatio * rho0;
-        bm.first = m_fills.back().first;
-        bm.count = m_fills.back().count;
+        BodyMaterial em = bm;
+        if (body.discretization == scene::Discretization::Fe) {
+            const fe::BodyMesh mesh =
+                fe::meshBody(body, static_cast<int32_t>(b), rho0, 0.0, axi, nodes, elements);
+            sph::BodyFill none;
+            none.first = m_particles.size();
+            none.spacing = mesh.elementSize;
+            m_fills.push_back(none);
+            em.first = mesh.firstElement;
+            em.count = mesh.elementCount;
+            // Element density follows the swept volume exactly; the stress cut-off for an
+            // expanded element is the same fraction as for a particle.
+            contactBodies.push_back({true, mesh.elementSize});
+        } else {
+            m_fills.push_back(sph::fillBody(body, static_cast<int32_t>(b), rho0, 0.0,
+                                            m_scene.sph.smoothingLengthFactor, axi,
+                                            m_particles));
+            bm.first = m_fills.back().first;
+            bm.count = m_fills.back().count;
+            contactBodies.push_back({false, m_fills.back().spacing});
+        }
+        if (body.discretization == scene::Discretization::Fe) {
+            bm.count = 0;
+        } else {
+            em.count = 0;
+        }
         bodyMaterials.push_back(bm);
+        elementMaterials.push_back(em);
+        erosionFactors.push_back(body.erosionFactor);
         m_minSpacing = std::min(m_minSpacing, m_fills.back().spacing);
     }
     // Strength arrays for every particle of every body (ParticleSet keeps an explicit flag,
@@ -60,6 +85,20 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         m_particles.enableStrength();
     }
     m_materials = std::make_unique<MaterialPackage>(std::move(bodyMaterials));
+    if (m_scene.hasFeBodies()) {
+        m_feMaterials = std::make_unique<MaterialPackage>(std::move(elementMaterials));
+        fe::FeOptions feOptions;
+        feOptions.axisymmetric = axi;
+        feOptions.hourglassCoefficient = m_scene.fe.hourglassCoefficient;
+        feOptions.bulkLinear = m_scene.fe.bulkViscosityLinear;
+        feOptions.bulkQuadratic = m_scene.fe.bulkViscosityQuadratic;
+        m_fe = std::make_unique<fe::FeSolid>(feOptions, std::move(nodes), std::move(elements),
+                                             std::move(erosionFactors));
+        contact::ContactOptions contactOptions;
+        contactOptions.axisymmetric = axi;
+        m_contact =
+            std::make_unique<contact::KinematicContact>(contactOptions, std::move(contactBodies));
+    }
 
     sph::HydroOptions hydro;
     hydro.axisymmetric = axi;
@@ -98,6 +137,56 @@ void Simulation::refreshRates() {
     m_rates.resize(m_particles.size(), m_particles.hasStrength());
     m_materials->updatePressure(m_particles);
     computeRates();
+    if (m_fe) {
+        m_fe->computeForces(*m_feMaterials);
+        // The contact time-step vote for the first step.
+        double dt = m_dt;
+        if (!(dt > 0.0)) {
+            dt = m_scene.run.cfl * std::min(m_hydro->stableTimeStep(), m_fe->stableTimeStep());
+        }
+        m_vzHalf = m_particles.vz;
+        m_vrHalf = m_particles.vr;
+        m_eHalf = m_particles.e;
+        m_contact->vote(m_particles, {&m_vzHalf, &m_vrHalf, &m_eHalf}, m_fe->elements(),
+                        m_fe->nodes(), dt);
+    }
+}
+
+void Simulation::driftNodes(double dt) {
+    auto& nd = m_fe->nodes();
+    const bool axi = m_scene.geometry == scene::Geometry::Axisymmetric;
+    const std::size_t n = nd.size();
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!nd.alive[k]) {
+            continue;
+        }
+        nd.z[k] += dt * nd.vz[k];
+        nd.r[k] += dt * nd.vr[k];
+        if (axi && nd.r[k] < 0.0) {
+            nd.r[k] = -nd.r[k]; // reflect, as particles: no node ever has r < 0
+            nd.vr[k] = std::fabs(nd.vr[k]);
+        }
+    }
+}
+
+void Simulation::kickNodes(double dt) {
+    auto& nd = m_fe->nodes();
+    const double half = 0.5 * dt;
+    const bool axi = m_scene.geometry == scene::Geometry::Axisymmetric;
+    const std::size_t n = nd.size();
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!nd.alive[k]) {
+            continue;
+        }
+        const double inv = 1.0 / nd.mass[k];
+        nd.vz[k] += half * nd.fz[k] * inv;
+        nd.vr[k] += half * nd.fr[k] * inv;
+        if (axi && nd.onAxis[k]) {
+            nd.vr[k] = 0.0;
+        }
+    }
 }
 
 void Simulation::computeRates() {
@@ -113,7 +202,19 @@ void Simulation::advance() {
     const bool strength = ps.hasStrength();
     const bool axi = m_scene.geometry == scene::Geometry::Axisymmetric;
 
-    double dt = m_scene.run.cfl * m_hydro->stableTimeStep();
+    double vote = m_hydro->stableTimeStep();
+    m_dtLimiter = "sph";
+    if (m_fe) {
+        if (m_fe->stableTimeStep() < vote) {
+            vote = m_fe->stableTimeStep();
+            m_dtLimiter = "fe";
+        }
+        if (m_contact->stableTimeStep() < vote) {
+            vote = m_contact->stableTimeStep();
+            m_dtLimiter = "contact";
+        }
+    }
+    double dt = m_scene.run.cfl * vote;
     if (!std::isfinite(dt)) {
         dt = m_scene.run.cfl * m_minSpacing; // nothing active: any step is stable
     }
@@ -137,7 +238,7 @@ void Simulation::advance() {
         m_srzHalf.resize(n);
     }
     auto& rt = m_rates;
-    // Half kick with the rates of the start of the step, drift, predict the end state.
+    // Half kick with the rates of the start of the step.
 #pragma omp parallel for schedule(static) if (n > kParallelMinItems)
     for (std::size_t i = 0; i < n; ++i) {
         if (!ps.alive[i]) {
@@ -148,6 +249,30 @@ void Simulation::advance() {
         m_eHalf[i] = ps.e[i] + half * rt.de[i];
         m_rhoHalf[i] = ps.rho[i] + half * rt.drho[i];
         m_hHalf[i] = ps.h[i] + half * rt.dh[i];
+        if (strength) {
+            m_szzHalf[i] = ps.szz[i] + half * rt.dszz[i];
+            m_srrHalf[i] = ps.srr[i] + half * rt.dsrr[i];
+            m_srzHalf[i] = ps.srz[i] + half * rt.dsrz[i];
+        }
+    }
+    using Clock = std::chrono::steady_clock;
+    auto t0 = Clock::now();
+    if (m_fe) {
+        kickNodes(dt);
+        // Contact constrains the half-step velocities before anything drifts.
+        m_contact->resolve(ps, {&m_vzHalf, &m_vrHalf, &m_eHalf}, m_fe->elements(), m_fe->nodes(),
+                           dt);
+        driftNodes(dt);
+        const auto t1 = Clock::now();
+        m_packageSeconds.contact += std::chrono::duration<double>(t1 - t0).count();
+        t0 = t1;
+    }
+    // Drift, and predict the end state with the same rates.
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!ps.alive[i]) {
+            continue;
+        }
         ps.z[i] += dt * m_vzHalf[i];
         ps.r[i] += dt * m_vrHalf[i];
         if (axi) {
@@ -164,9 +289,6 @@ void Simulation::advance() {
         ps.rho[i] = m_rhoHalf[i] + half * rt.drho[i];
         ps.h[i] = m_hHalf[i] + half * rt.dh[i];
         if (strength) {
-            m_szzHalf[i] = ps.szz[i] + half * rt.dszz[i];
-            m_srrHalf[i] = ps.srr[i] + half * rt.dsrr[i];
-            m_srzHalf[i] = ps.srz[i] + half * rt.dsrz[i];
             ps.szz[i] = m_szzHalf[i] + half * rt.dszz[i];
             ps.srr[i] = m_srrHalf[i] + half * rt.dsrr[i];
             ps.srz[i] = m_srzHalf[i] + half * rt.dsrz[i];
@@ -175,6 +297,15 @@ void Simulation::advance() {
     clampSmoothingLengths();
     m_materials->updatePressure(ps);
     computeRates();
+    if (m_fe) {
+        const auto t1 = Clock::now();
+        m_packageSeconds.sph += std::chrono::duration<double>(t1 - t0).count();
+        t0 = t1;
+        m_fe->update(dt, *m_feMaterials);
+        m_packageSeconds.fe += std::chrono::duration<double>(Clock::now() - t0).count();
+    } else {
+        m_packageSeconds.sph += std::chrono::duration<double>(Clock::now() - t0).count();
+    }
 
     // Second half kick with the rates of the predicted end state.
     const auto& bodies = m_materials->bodies();
@@ -196,6 +327,9 @@ void Simulation::advance() {
             ps.srr[i] = m_srrHalf[i] + half * rt.dsrr[i];
             ps.srz[i] = m_srzHalf[i] + half * rt.dsrz[i];
         }
+    }
+    if (m_fe) {
+        kickNodes(dt);
     }
     clampSmoothingLengths();
     m_materials->applyPlasticity(ps, rt, m_neighbours.active);
@@ -251,6 +385,37 @@ void Simulation::deleteParticles() {
             --m_aliveCount;
         }
     }
+    if (!m_fe) {
+        return;
+    }
+    // Nodes: a non-finite state is a failure; a free node (no alive element left) obeys the
+    // same runaway and domain rules as a particle.
+    auto& nd = m_fe->nodes();
+    for (std::size_t k = 0; k < nd.size(); ++k) {
+        if (!nd.alive[k]) {
+            continue;
+        }
+        const double v2 = nd.vz[k] * nd.vz[k] + nd.vr[k] * nd.vr[k];
+        if (!std::isfinite(v2) || !std::isfinite(nd.z[k]) || !std::isfinite(nd.r[k])) {
+            throw RuntimeFailure(
+                "non-finite state at t = " + std::to_string(m_time) + " us, step " +
+                std::to_string(m_step) + ", node " + std::to_string(k) + " of body '" +
+                m_scene.bodies[static_cast<std::size_t>(nd.body[k])].name +
+                "' (try a smaller cfl or a larger fe.hourglass_coefficient)");
+        }
+        if (nd.elementCount[k] > 0) {
+            continue;
+        }
+        const bool runaway = v2 > runaway2;
+        const bool outside = nd.z[k] < m_zMin || nd.z[k] > m_zMax || std::fabs(nd.r[k]) > m_rMax;
+        if (runaway || outside) {
+            nd.alive[k] = 0;
+            m_deletedEnergy += 0.5 * nd.mass[k] * v2;
+            m_deletedMass += nd.mass[k];
+            m_deletedMomentumZ += nd.mass[k] * nd.vz[k];
+            ++(runaway ? m_runawayDeleted : m_outOfDomainDeleted);
+        }
+    }
 }
 
 Totals Simulation::totals() const {
@@ -269,6 +434,25 @@ Totals Simulation::totals() const {
         t.momentumZ += m * ps.vz[i];
     }
     t.deletedEnergy = m_deletedEnergy;
+    if (m_fe) {
+        const auto& nd = m_fe->nodes();
+        for (std::size_t k = 0; k < nd.size(); ++k) {
+            if (nd.alive[k]) {
+                const double m = nd.mass[k];
+                t.kinetic += 0.5 * m * (nd.vz[k] * nd.vz[k] + nd.vr[k] * nd.vr[k]);
+                t.mass += m;
+                t.momentumZ += m * nd.vz[k];
+            }
+        }
+        const auto& el = m_fe->elements();
+        for (std::size_t i = 0; i < el.size(); ++i) {
+            if (el.alive[i]) {
+                t.internal += el.mass[i] * el.e[i];
+            }
+        }
+        t.deletedEnergy += m_fe->erodedEnergy();
+        t.erodedElements = m_fe->erodedCount();
+    }
     t.deletedMass = m_deletedMass;
     t.deletedMomentumZ = m_deletedMomentumZ;
     t.active = m_neighbours.active.size();
@@ -295,6 +479,18 @@ void Simulation::updateProgress() {
             front = std::max(front, ps.z[i]);
         }
     }
+    const fe::NodeSet* nodes = m_fe ? &m_fe->nodes() : nullptr;
+    if (nodes) {
+        for (std::size_t k = 0; k < nodes->size(); ++k) {
+            if (!nodes->alive[k]) {
+                continue;
+            }
+            fastest = std::max(fastest, nodes->vz[k]);
+            if (nodes->vz[k] > moving) {
+                front = std::max(front, nodes->z[k]);
+            }
+        }
+    }
     m_debrisSpeed = fastest;
     bool newPenetration = false;
     for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
@@ -310,6 +506,13 @@ void Simulation::updateProgress() {
                 m_penetrated[b] = 1;
                 newPenetration = true;
                 break;
+            }
+        }
+        for (std::size_t k = 0; nodes && !m_penetrated[b] && k < nodes->size(); ++k) {
+            if (nodes->alive[k] && static_cast<std::size_t>(nodes->body[k]) != b &&
+                nodes->z[k] > rear && nodes->r[k] >= rLo && nodes->r[k] <= rHi) {
+                m_penetrated[b] = 1;
+                newPenetration = true;
             }
         }
     }
@@ -347,7 +550,8 @@ std::optional<std::string> Simulation::stopReason() const {
 
 void Simulation::restoreClock(double time, long step, double dt, double initialEnergy,
                               double deletedEnergy, double deletedMass, double deletedMomentumZ,
-                              std::size_t runaway, std::size_t outOfDomain) {
+                              std::size_t runaway, std::size_t outOfDomain, double erodedEnergy,
+                              std::size_t erodedCount) {
     m_time = time;
     m_step = step;
     m_dt = dt;
@@ -360,6 +564,10 @@ void Simulation::restoreClock(double time, long step, double dt, double initialE
     m_aliveCount = 0;
     for (const auto a : m_particles.alive) {
         m_aliveCount += a ? 1 : 0;
+    }
+    if (m_fe) {
+        m_fe->restoreErosion(erodedEnergy, erodedCount);
+        m_fe->recountNodeElements();
     }
     refreshRates();
     updateProgress();

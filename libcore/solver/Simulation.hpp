@@ -1,18 +1,24 @@
-// The explicit time loop: it composes the physics packages (SPH hydro, material pipeline),
-// takes the smallest time step any of them asks for, applies the deletion rules and keeps
-// the conservation ledger. No physics lives here; see the packages.
+// The explicit time loop: it composes the physics packages (SPH hydro, finite elements, the
+// material pipeline they share, contact), takes the smallest time step any of them asks for,
+// applies the deletion rules and keeps the conservation ledger. No physics lives here; see
+// the packages. A scene without FE bodies allocates nothing of the FE and contact packages.
 //
 // Integrator: kick-drift-kick leapfrog with a predicted end-of-step state (velocity Verlet in
 // the form used by Monaghan 2005, Rep. Prog. Phys. 68:1703, section 8.1), one rate evaluation
 // per step:
 //   half kick with the rates of step n; drift positions a full step; predict the end-of-step
 //   state with the same rates; evaluate rates there; second half kick with the new rates.
+// FE nodes take the same kicks and drift; contact constrains the half-step velocities of
+// particles and nodes before the drift; the elements are updated with the half-step node
+// velocities (central difference).
 // Time step: dt = cfl * min(package votes), grown by at most 25 % per step (a sudden jump in
 // dt after a quiet phase would skip the first steps of a new contact).
 //
 // Units: mm, us, mg (km/s, GPa, g/cm^3, MJ/kg, J); see docs/conventions.md.
 #pragma once
 
+#include "contact/KinematicContact.hpp"
+#include "fe/FeSolid.hpp"
 #include "material/MaterialLibrary.hpp"
 #include "scene/Scene.hpp"
 #include "solver/MaterialPackage.hpp"
@@ -30,14 +36,15 @@ namespace hvi::solver {
 
 /// Conservation ledger at one instant.
 struct Totals {
-    double kinetic = 0.0;        ///< [J] (planar: J/mm)
-    double internal = 0.0;       ///< [J]
-    double deletedEnergy = 0.0;  ///< kinetic + internal of deleted particles [J]
-    double mass = 0.0;           ///< alive mass [mg]
+    double kinetic = 0.0;        ///< particles and nodes [J] (planar: J/mm)
+    double internal = 0.0;       ///< particles and alive elements [J]
+    double deletedEnergy = 0.0;  ///< deleted particles and free nodes, eroded elements [J]
+    double mass = 0.0;           ///< alive mass (particles and nodes) [mg]
     double deletedMass = 0.0;    ///< [mg]
     double momentumZ = 0.0;      ///< alive z-momentum [mg km/s]
     double deletedMomentumZ = 0.0;
-    std::size_t alive = 0, deleted = 0, active = 0;
+    std::size_t alive = 0, deleted = 0, active = 0; ///< particles
+    std::size_t erodedElements = 0;
 };
 
 struct SimulationOptions {
@@ -64,6 +71,17 @@ public:
     /// The particle whose stability limit set the last time step (-1 if none).
     int32_t dtLimitingParticle() const { return m_hydro->limitingParticle(); }
     std::size_t pairCount() const { return m_neighbours.pairCount(); }
+    /// The FE package, null in a scene without FE bodies.
+    const fe::FeSolid* finiteElements() const { return m_fe.get(); }
+    fe::FeSolid* finiteElements() { return m_fe.get(); }
+    const contact::KinematicContact* contact() const { return m_contact.get(); }
+    /// Wall time spent so far in each package [s] (for the benchmark's throughput figures).
+    struct PackageSeconds {
+        double sph = 0.0, fe = 0.0, contact = 0.0;
+    };
+    const PackageSeconds& packageSeconds() const { return m_packageSeconds; }
+    /// The package whose limit set the last time step ("sph", "fe", "contact").
+    const std::string& dtLimiter() const { return m_dtLimiter; }
 
     Totals totals() const;
     double initialEnergy() const { return m_initialEnergy; }
@@ -84,7 +102,8 @@ public:
     /// Restores time and counters after a checkpoint's particle arrays were loaded.
     void restoreClock(double time, long step, double dt, double initialEnergy,
                       double deletedEnergy, double deletedMass, double deletedMomentumZ,
-                      std::size_t runaway, std::size_t outOfDomain);
+                      std::size_t runaway, std::size_t outOfDomain, double erodedEnergy = 0.0,
+                      std::size_t erodedCount = 0);
     /// Recomputes pressures and rates after the particle arrays were replaced.
     void refreshRates();
 
@@ -93,6 +112,8 @@ private:
     void deleteParticles();
     void clampSmoothingLengths();
     void updateProgress();
+    void driftNodes(double dt);
+    void kickNodes(double dt);
 
     scene::Scene m_scene;
     SimulationOptions m_options;
@@ -101,7 +122,12 @@ private:
     sph::NeighbourList m_neighbours;
     sph::NeighbourSearchOptions m_searchOptions;
     std::unique_ptr<sph::SphHydro> m_hydro;
-    std::unique_ptr<MaterialPackage> m_materials;
+    std::unique_ptr<MaterialPackage> m_materials;   ///< SPH bodies' material points
+    std::unique_ptr<MaterialPackage> m_feMaterials; ///< FE bodies' elements (FE scenes only)
+    std::unique_ptr<fe::FeSolid> m_fe;
+    std::unique_ptr<contact::KinematicContact> m_contact;
+    std::string m_dtLimiter = "sph";
+    PackageSeconds m_packageSeconds;
     std::vector<sph::BodyFill> m_fills;
     std::vector<material::MaterialSpec> m_specs; // owned copies, one per body
 

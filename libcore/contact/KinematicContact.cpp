@@ -1,0 +1,444 @@
+#include "contact/KinematicContact.hpp"
+
+#include "core/Parallel.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <omp.h>
+#include <utility>
+
+namespace hvi::contact {
+
+namespace {
+
+constexpr int kMaxContactsPerSlave = 4;
+
+/// One slave's candidate contacts of this step (found in parallel, resolved serially).
+struct SlaveContacts {
+    int count = 0;
+    std::array<int32_t, kMaxContactsPerSlave> target{}; ///< segment, or -1 - particle index
+    double dt = std::numeric_limits<double>::infinity();
+};
+
+/// A uniform grid over points (segment midpoints or particles), CSR by cell.
+struct PointGrid {
+    double z0 = 0.0, r0 = 0.0, cell = 1.0;
+    long nz = 0, nr = 0;
+    std::vector<int32_t> start, items;
+
+    long cellZ(double z) const { return static_cast<long>(std::floor((z - z0) / cell)); }
+    long cellR(double r) const { return static_cast<long>(std::floor((r - r0) / cell)); }
+
+    template <class GetZ, class GetR>
+    void build(std::size_t n, GetZ getZ, GetR getR, double cellSize) {
+        cell = cellSize;
+        double zLo = std::numeric_limits<double>::infinity(), zHi = -zLo, rLo = zLo, rHi = -zLo;
+        for (std::size_t i = 0; i < n; ++i) {
+            zLo = std::min(zLo, getZ(i));
+            zHi = std::max(zHi, getZ(i));
+            rLo = std::min(rLo, getR(i));
+            rHi = std::max(rHi, getR(i));
+        }
+        if (n == 0) {
+            nz = nr = 0;
+            start.assign(1, 0);
+            items.clear();
+            return;
+        }
+        z0 = zLo - cell;
+        r0 = rLo - cell;
+        nz = cellZ(zHi) + 2;
+        nr = cellR(rHi) + 2;
+        start.assign(static_cast<std::size_t>(nz * nr) + 1, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            ++start[static_cast<std::size_t>(cellZ(getZ(i)) * nr + cellR(getR(i))) + 1];
+        }
+        for (std::size_t c = 1; c < start.size(); ++c) {
+            start[c] += start[c - 1];
+        }
+        items.assign(n, 0);
+        std::vector<int32_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto c = static_cast<std::size_t>(cellZ(getZ(i)) * nr + cellR(getR(i)));
+            items[static_cast<std::size_t>(fill[c]++)] = static_cast<int32_t>(i);
+        }
+    }
+
+    /// Calls f(item) for the items in the 3 x 3 cells around (z, r), in cell order.
+    template <class F>
+    void forNear(double z, double r, F&& f) const {
+        const long cz = cellZ(z), cr = cellR(r);
+        for (long iz = std::max(cz - 1, 0L); iz <= std::min(cz + 1, nz - 1); ++iz) {
+            for (long ir = std::max(cr - 1, 0L); ir <= std::min(cr + 1, nr - 1); ++ir) {
+                const auto c = static_cast<std::size_t>(iz * nr + ir);
+                for (int32_t k = start[c]; k < start[c + 1]; ++k) {
+                    f(items[static_cast<std::size_t>(k)]);
+                }
+            }
+        }
+    }
+};
+
+} // namespace
+
+KinematicContact::KinematicContact(ContactOptions options, std::vector<ContactBody> bodies)
+    : m_options(options), m_bodies(std::move(bodies)) {}
+
+void KinematicContact::rebuildSegments(const fe::ElementSet& el, const fe::NodeSet& nd) {
+    // Boundary edges: edges of exactly one alive element of a body. Axisymmetric: edges on
+    // the axis are no surface.
+    struct Edge {
+        int uses = 0;
+        int32_t from = 0, to = 0, element = 0;
+    };
+    std::map<std::pair<int32_t, int32_t>, Edge> edges;
+    m_nodeElement.assign(nd.size(), -1);
+    for (std::size_t i = 0; i < el.size(); ++i) {
+        if (!el.alive[i]) {
+            continue;
+        }
+        for (int a = 0; a < 4; ++a) {
+            const int32_t na = el.node(i, a), nb = el.node(i, (a + 1) % 4);
+            Edge& edge = edges[{std::min(na, nb), std::max(na, nb)}];
+            ++edge.uses;
+            edge.from = na;
+            edge.to = nb;
+            edge.element = static_cast<int32_t>(i);
+            m_nodeElement[static_cast<std::size_t>(na)] = static_cast<int32_t>(i);
+        }
+    }
+    m_segA.clear();
+    m_segB.clear();
+    m_segBody.clear();
+    m_segElement.clear();
+    m_surfaceNode.assign(nd.size(), 0);
+    for (const auto& [key, edge] : edges) {
+        if (edge.uses != 1) {
+            continue;
+        }
+        const int32_t na = edge.from, nb = edge.to;
+        const auto a = static_cast<std::size_t>(na), b = static_cast<std::size_t>(nb);
+        if (m_options.axisymmetric && nd.onAxis[a] && nd.onAxis[b]) {
+            continue;
+        }
+        m_segA.push_back(na);
+        m_segB.push_back(nb);
+        m_segBody.push_back(nd.body[a]);
+        m_segElement.push_back(edge.element);
+        m_surfaceNode[a] = m_surfaceNode[b] = 1;
+    }
+}
+
+void KinematicContact::resolve(sph::ParticleSet& ps, const ParticleHalfStep& half,
+                               fe::ElementSet& el, fe::NodeSet& nd, double dt) {
+    run(ps, half, el, nd, dt, true);
+}
+
+void KinematicContact::vote(sph::ParticleSet& ps, const ParticleHalfStep& half,
+                            fe::ElementSet& el, fe::NodeSet& nd, double dt) {
+    run(ps, half, el, nd, dt, false);
+}
+
+void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
+                           fe::ElementSet& el, fe::NodeSet& nd, double dt, bool constrain) {
+    std::size_t aliveElements = 0;
+    for (const auto a : el.alive) {
+        aliveElements += a;
+    }
+    if (aliveElements != m_aliveElementsAtBuild) {
+        rebuildSegments(el, nd);
+        m_aliveElementsAtBuild = aliveElements;
+    }
+    m_stableDt = std::numeric_limits<double>::infinity();
+    m_contactCount = 0;
+
+    double maxSize = 0.0;
+    for (const auto& b : m_bodies) {
+        maxSize = std::max(maxSize, b.size);
+    }
+    const double cellSize = 2.5 * maxSize;
+
+    // Slaves: alive particles, then alive FE nodes on a surface or free.
+    const std::size_t np = ps.size();
+    std::vector<int32_t> slaveNodes;
+    for (std::size_t n = 0; n < nd.size(); ++n) {
+        if (nd.alive[n] && (m_surfaceNode[n] || nd.elementCount[n] == 0)) {
+            slaveNodes.push_back(static_cast<int32_t>(n));
+        }
+    }
+    const std::size_t slaveCount = np + slaveNodes.size();
+    std::vector<SlaveContacts> found(slaveCount);
+
+    PointGrid segments;
+    const std::size_t ns = m_segA.size();
+    auto midZ = [&](std::size_t s) {
+        return 0.5 * (nd.z[static_cast<std::size_t>(m_segA[s])] +
+                      nd.z[static_cast<std::size_t>(m_segB[s])]);
+    };
+    auto midR = [&](std::size_t s) {
+        return 0.5 * (nd.r[static_cast<std::size_t>(m_segA[s])] +
+                      nd.r[static_cast<std::size_t>(m_segB[s])]);
+    };
+    segments.build(ns, midZ, midR, cellSize);
+
+    // Free nodes against particles: a grid of the particles near any free node.
+    std::vector<int32_t> freeNodes;
+    for (const int32_t n : slaveNodes) {
+        if (nd.elementCount[static_cast<std::size_t>(n)] == 0) {
+            freeNodes.push_back(n);
+        }
+    }
+    PointGrid particleGrid;
+    std::vector<int32_t> nearParticles;
+    if (!freeNodes.empty() && np > 0) {
+        double zLo = std::numeric_limits<double>::infinity(), zHi = -zLo, rLo = zLo, rHi = -zLo;
+        for (const int32_t n : freeNodes) {
+            zLo = std::min(zLo, nd.z[static_cast<std::size_t>(n)]);
+            zHi = std::max(zHi, nd.z[static_cast<std::size_t>(n)]);
+            rLo = std::min(rLo, nd.r[static_cast<std::size_t>(n)]);
+            rHi = std::max(rHi, nd.r[static_cast<std::size_t>(n)]);
+        }
+        for (std::size_t i = 0; i < np; ++i) {
+            if (ps.alive[i] && ps.z[i] > zLo - cellSize && ps.z[i] < zHi + cellSize &&
+                ps.r[i] > rLo - cellSize && ps.r[i] < rHi + cellSize) {
+                nearParticles.push_back(static_cast<int32_t>(i));
+            }
+        }
+        particleGrid.build(
+            nearParticles.size(),
+            [&](std::size_t k) { return ps.z[static_cast<std::size_t>(nearParticles[k])]; },
+            [&](std::size_t k) { return ps.r[static_cast<std::size_t>(nearParticles[k])]; },
+            cellSize);
+    }
+
+    // The state of a slave, read or written through one accessor.
+    struct Slave {
+        double* z;
+        double* r;
+        double* vz;
+        double* vr;
+        double mass, radius;
+        int32_t body;
+        bool free;
+    };
+    auto slaveAt = [&](std::size_t k) {
+        const bool isParticle = k < np;
+        const std::size_t idx = isParticle ? k : static_cast<std::size_t>(slaveNodes[k - np]);
+        Slave s{};
+        if (isParticle) {
+            s = {&ps.z[idx], &ps.r[idx], &(*half.vz)[idx], &(*half.vr)[idx], ps.mass[idx], 0.0,
+                 ps.body[idx], false};
+        } else {
+            s = {&nd.z[idx], &nd.r[idx], &nd.vz[idx], &nd.vr[idx], nd.mass[idx], 0.0,
+                 nd.body[idx], nd.elementCount[idx] == 0};
+        }
+        const double size = m_bodies[static_cast<std::size_t>(s.body)].size;
+        s.radius = isParticle ? 0.5 * size : 0.0;
+        return s;
+    };
+    // Geometry of slave (z, r) against segment s.
+    struct SegmentHit {
+        double xi = 0.0, gap = 0.0, nz = 0.0, nr = 0.0, band = 0.0;
+        bool valid = false;
+    };
+    auto hit = [&](double z, double r, std::size_t s) {
+        SegmentHit h;
+        const auto a = static_cast<std::size_t>(m_segA[s]);
+        const auto b = static_cast<std::size_t>(m_segB[s]);
+        const double tz = nd.z[b] - nd.z[a], tr = nd.r[b] - nd.r[a];
+        const double length = std::sqrt(tz * tz + tr * tr);
+        if (!(length > 0.0)) {
+            return h;
+        }
+        const double uz = tz / length, ur = tr / length;
+        h.nz = ur; // outward: the element lies to the left of A -> B
+        h.nr = -uz;
+        const double pz = z - nd.z[a], pr = r - nd.r[a];
+        h.xi = (pz * uz + pr * ur) / length;
+        h.gap = pz * h.nz + pr * h.nr;
+        h.band = 0.5 * m_bodies[static_cast<std::size_t>(m_segBody[s])].size;
+        h.valid = h.xi >= 0.0 && h.xi <= 1.0;
+        return h;
+    };
+
+    // 1: candidates and time-step votes, in parallel.
+#pragma omp parallel for schedule(dynamic, 256) if (slaveCount > kParallelMinItems)
+    for (std::size_t k = 0; k < slaveCount; ++k) {
+        if (k < np && !ps.alive[k]) {
+            continue;
+        }
+        const Slave sl = slaveAt(k);
+        SlaveContacts& out = found[k];
+        segments.forNear(*sl.z, *sl.r, [&](int32_t s) {
+            const auto su = static_cast<std::size_t>(s);
+            if (m_segBody[su] == sl.body) {
+                return;
+            }
+            const SegmentHit h = hit(*sl.z, *sl.r, su);
+            if (!h.valid || h.gap <= -h.band) {
+                return;
+            }
+            const auto a = static_cast<std::size_t>(m_segA[su]);
+            const auto b = static_cast<std::size_t>(m_segB[su]);
+            const double vmz = (1.0 - h.xi) * nd.vz[a] + h.xi * nd.vz[b];
+            const double vmr = (1.0 - h.xi) * nd.vr[a] + h.xi * nd.vr[b];
+            const double approach = -((*sl.vz - vmz) * h.nz + (*sl.vr - vmr) * h.nr);
+            if (approach > 0.0) {
+                // The search reaches half a cell beyond any slave: no approach may outrun it.
+                out.dt = std::min(out.dt, 0.5 * cellSize / approach);
+                if (h.gap - sl.radius < approach * dt && out.count < kMaxContactsPerSlave) {
+                    out.target[static_cast<std::size_t>(out.count++)] = s;
+                }
+            }
+        });
+        if (sl.free && !nearParticles.empty()) {
+            particleGrid.forNear(*sl.z, *sl.r, [&](int32_t kp) {
+                const auto j = static_cast<std::size_t>(nearParticles[static_cast<std::size_t>(kp)]);
+                const double reach =
+                    sl.radius + 0.5 * m_bodies[static_cast<std::size_t>(ps.body[j])].size;
+                const double dz = *sl.z - ps.z[j], dr = *sl.r - ps.r[j];
+                const double dist = std::sqrt(dz * dz + dr * dr);
+                if (!(dist > 0.0)) {
+                    return;
+                }
+                const double approach =
+                    -((*sl.vz - (*half.vz)[j]) * dz + (*sl.vr - (*half.vr)[j]) * dr) / dist;
+                if (approach > 0.0) {
+                    out.dt = std::min(out.dt, 0.5 * cellSize / approach);
+                    if (dist - reach < approach * dt && out.count < kMaxContactsPerSlave) {
+                        out.target[static_cast<std::size_t>(out.count++)] =
+                            -1 - static_cast<int32_t>(j);
+                    }
+                }
+            });
+        }
+    }
+
+    // Contact flags of the previous step, per slave (particles, then nodes by node index).
+    std::vector<uint8_t> previous(slaveCount, 0), nowInContact(slaveCount, 0);
+    if (m_inContact.size() == np + nd.size()) {
+        for (std::size_t k = 0; k < slaveCount; ++k) {
+            previous[k] = m_inContact[k < np ? k : np + static_cast<std::size_t>(slaveNodes[k - np])];
+        }
+    }
+
+    // 2: resolve serially in slave order with the current (already changed) velocities.
+    auto heatParticle = [&](std::size_t i, double energy) {
+        (*half.e)[i] += energy / ps.mass[i];
+    };
+    auto heatElement = [&](int32_t element, double energy) {
+        const auto e = static_cast<std::size_t>(element);
+        el.e[e] += energy / el.mass[e];
+    };
+    // Changes the velocity of a point of mass m by dv along n; returns its kinetic-energy change.
+    auto kick = [](double& vz, double& vr, double m, double dv, double nz, double nr) {
+        const double before = vz * vz + vr * vr;
+        vz += dv * nz;
+        vr += dv * nr;
+        return 0.5 * m * (vz * vz + vr * vr - before);
+    };
+    for (std::size_t k = 0; k < slaveCount; ++k) {
+        const SlaveContacts& c = found[k];
+        m_stableDt = std::min(m_stableDt, c.dt);
+        if (c.count == 0 || !constrain) {
+            continue;
+        }
+        const bool isParticle = k < np;
+        const std::size_t idx = isParticle ? k : static_cast<std::size_t>(slaveNodes[k - np]);
+        const Slave sl = slaveAt(k);
+        const double invS = 1.0 / sl.mass;
+        const bool wasInContact = previous[k] != 0;
+        for (int q = 0; q < c.count; ++q) {
+            const int32_t target = c.target[static_cast<std::size_t>(q)];
+            double nz = 0.0, nr = 0.0, gap = 0.0, vn = 0.0, invSum = invS;
+            double wa = 0.0, wb = 0.0; // master shares
+            std::size_t a = 0, b = 0, j = 0;
+            int32_t masterElement = -1;
+            if (target >= 0) {
+                const auto s = static_cast<std::size_t>(target);
+                const SegmentHit h = hit(*sl.z, *sl.r, s);
+                a = static_cast<std::size_t>(m_segA[s]);
+                b = static_cast<std::size_t>(m_segB[s]);
+                nz = h.nz;
+                nr = h.nr;
+                gap = h.gap - sl.radius;
+                wa = 1.0 - h.xi;
+                wb = h.xi;
+                vn = (*sl.vz - (wa * nd.vz[a] + wb * nd.vz[b])) * nz +
+                     (*sl.vr - (wa * nd.vr[a] + wb * nd.vr[b])) * nr;
+                invSum += wa * wa / nd.mass[a] + wb * wb / nd.mass[b];
+                masterElement = m_segElement[s];
+            } else {
+                j = static_cast<std::size_t>(-1 - target);
+                const double reach =
+                    sl.radius + 0.5 * m_bodies[static_cast<std::size_t>(ps.body[j])].size;
+                const double dz = *sl.z - ps.z[j], dr = *sl.r - ps.r[j];
+                const double dist = std::sqrt(dz * dz + dr * dr);
+                if (!(dist > 0.0)) {
+                    continue;
+                }
+                nz = dz / dist;
+                nr = dr / dist;
+                gap = dist - reach;
+                vn = (*sl.vz - (*half.vz)[j]) * nz + (*sl.vr - (*half.vr)[j]) * nr;
+                invSum += 1.0 / ps.mass[j];
+            }
+            // The approach the step may still make: it closes the gap and no more.
+            const double allowed = std::max(gap, 0.0) / dt;
+            if (-vn <= allowed) {
+                continue;
+            }
+            const double impulse = (-vn - allowed) / invSum;
+            double gained = kick(*sl.vz, *sl.vr, sl.mass, impulse * invS, nz, nr);
+            if (target >= 0) {
+                for (const auto& [node, w] : {std::pair{a, wa}, std::pair{b, wb}}) {
+                    gained += kick(nd.vz[node], nd.vr[node], nd.mass[node],
+                                   -impulse * w / nd.mass[node], nz, nr);
+                }
+            } else {
+                gained += kick((*half.vz)[j], (*half.vr)[j], ps.mass[j], -impulse / ps.mass[j],
+                               nz, nr);
+            }
+            nowInContact[k] = 1;
+            ++m_contactCount;
+            // A new contact is a collision: the kinetic energy it takes becomes heat, half on
+            // each side, so total energy is conserved. A lasting contact only cancels the
+            // kick of the forces pressing the pair together, which the elements never paid
+            // for (their work follows the net motion): no heat.
+            if (wasInContact || gained >= 0.0) {
+                continue;
+            }
+            const double heat = -gained;
+            m_dissipatedEnergy += heat;
+            const double masterShare = 0.5 * heat;
+            double slaveShare = 0.5 * heat;
+            if (target < 0) {
+                heatParticle(j, masterShare);
+            } else if (masterElement >= 0) {
+                heatElement(masterElement, masterShare);
+            } else {
+                slaveShare = heat;
+            }
+            if (isParticle) {
+                heatParticle(idx, slaveShare);
+            } else if (nd.elementCount[idx] > 0 && m_nodeElement[idx] >= 0) {
+                heatElement(m_nodeElement[idx], slaveShare);
+            } else if (target >= 0 && masterElement >= 0) {
+                heatElement(masterElement, slaveShare); // a free node: all to the master
+            } else if (target < 0) {
+                heatParticle(j, slaveShare);
+            }
+        }
+    }
+    if (!constrain) {
+        return;
+    }
+    m_inContact.assign(np + nd.size(), 0);
+    for (std::size_t k = 0; k < slaveCount; ++k) {
+        m_inContact[k < np ? k : np + static_cast<std::size_t>(slaveNodes[k - np])] = nowInContact[k];
+    }
+}
+
+} // namespace hvi::contact

@@ -1,0 +1,113 @@
+// Contact between bodies that do not share a discretisation: SPH particles against
+// finite-element surfaces, FE nodes against the surfaces of other FE bodies, and free nodes
+// (left behind by erosion) against both. SPH particles of different bodies need none of this:
+// they interact through the SPH pair forces.
+//
+// Method: node-to-segment contact enforced on the velocities of the half step, before the
+// drift ("speculative" contact: a constraint on the velocity that closes the gap and no
+// more, Catto E. (2013), "Continuous collision", GDC; the node-on-segment geometry and the
+// momentum-exchange form are those of the eroding-interface contact of EPIC, Johnson G.R.,
+// Stryk R.A. (1987), Int. J. Impact Eng. 5:411-421, and of particles against element
+// surfaces, Johnson, Beissel & Stryk (2002), Comput. Methods Appl. Mech. Eng. 191:2451).
+// After the first half kick of a step dt, a slave (particle, surface node or free node) of
+// radius R at signed distance g from a master segment A -> B of another body (outward normal
+// n, projection xi in [0, 1], and -l/2 < g with l the master body's element size, so a slave
+// deeper than half an element is never pushed out through the far side of a thin layer),
+// approaching it with normal speed -v_n larger than the gap it may still close, (g - R)/dt
+// (0 once touching), gets the normal impulse that brings the approach down to that,
+//     J = (-v_n - max(g - R, 0)/dt) / (1/m_s + (1-xi)^2/m_A + xi^2/m_B),
+// applied as +J n to the slave and -J (1-xi) n, -J xi n to A and B. So the drift never makes
+// it penetrate, the pair's momentum is conserved exactly, nothing is ever pushed apart or
+// pulled back (no position corrections, no sticking), and contact cannot create energy.
+// When a contact is new (the slave had none in the previous step), the kinetic energy the
+// impulse takes (a perfectly inelastic normal collision of the contact points) becomes heat,
+// half in the slave (a particle's specific energy, or an element of a node) and half in the
+// master segment's element, as in a real impact where it goes into shock heating. A lasting
+// contact only cancels the kick of the forces pressing the pair together, which the elements
+// never paid for (their work follows the net motion): no heat.
+// Master segments are the boundary edges of the alive elements of each FE body (edges of
+// exactly one alive element), so surfaces exposed by erosion become masters as soon as an
+// element erodes. Radii: a particle R = spacing / 2 (its lattice half-width, so particles rest
+// against a surface at the spacing they keep among themselves); a node R = 0. Free nodes
+// against particles: the same impulse along the line of centres.
+// Time step: a slave approaching a segment at normal speed v_n votes dt <= (c/2) / v_n (c: the
+// search cell, 2.5 times the largest body spacing; times the Courant factor), so no approach
+// outruns the search, and every pair that could touch within a step is constrained (no
+// pass-through at any speed). Contacts are found in parallel and resolved serially in slave
+// order, so the result does not depend on the thread count.
+//
+// Units: mm, us, mg (km/s, J).
+#pragma once
+
+#include "fe/FeMesh.hpp"
+#include "sph/ParticleSet.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace hvi::contact {
+
+struct ContactOptions {
+    bool axisymmetric = true;
+};
+
+/// The particles' half-step state (the leapfrog's v^{n+1/2} and e^{n+1/2} arrays).
+struct ParticleHalfStep {
+    std::vector<double>* vz = nullptr;
+    std::vector<double>* vr = nullptr;
+    std::vector<double>* e = nullptr;
+};
+
+/// What contact needs to know about the bodies (scene body index -> size, discretisation).
+struct ContactBody {
+    bool finiteElement = false;
+    double size = 0.0; ///< particle spacing or element size [mm]
+};
+
+class KinematicContact {
+public:
+    KinematicContact(ContactOptions options, std::vector<ContactBody> bodies);
+
+    /// Constrains the half-step velocities of a step of length dt [us] before the drift, at
+    /// the start-of-step positions: node velocities (nodes.vz/vr) and the particles'
+    /// half-step arrays change, and, as heat, specific energies (the particles' half-step
+    /// energy, elements' e); momentum and total energy do not change.
+    void resolve(sph::ParticleSet& particles, const ParticleHalfStep& half,
+                 fe::ElementSet& elements, fe::NodeSet& nodes, double dt);
+
+    /// Only the time-step vote for the current state (start of a run, resume): changes
+    /// nothing.
+    void vote(sph::ParticleSet& particles, const ParticleHalfStep& half, fe::ElementSet& elements,
+              fe::NodeSet& nodes, double dt);
+
+    /// Largest time step without pass-through, from the last resolve() [us] (+inf if nothing
+    /// approaches a surface).
+    double stableTimeStep() const { return m_stableDt; }
+    /// Kinetic energy turned into heat at contacts since the start [J].
+    double dissipatedEnergy() const { return m_dissipatedEnergy; }
+    void restoreDissipatedEnergy(double energy) { m_dissipatedEnergy = energy; }
+    /// Contacts resolved in the last resolve().
+    std::size_t contactCount() const { return m_contactCount; }
+    /// Master segments (FE surface edges) in use.
+    std::size_t segmentCount() const { return m_segA.size(); }
+
+private:
+    void run(sph::ParticleSet& particles, const ParticleHalfStep& half, fe::ElementSet& elements,
+             fe::NodeSet& nodes, double dt, bool constrain);
+    void rebuildSegments(const fe::ElementSet& elements, const fe::NodeSet& nodes);
+
+    ContactOptions m_options;
+    std::vector<ContactBody> m_bodies;
+    // Master segments: nodes A -> B with the element interior on the left.
+    std::vector<int32_t> m_segA, m_segB, m_segBody, m_segElement;
+    std::vector<int32_t> m_nodeElement; ///< an alive element of each node (-1: free node)
+    std::vector<uint8_t> m_surfaceNode; ///< node lies on a master segment of its own body
+    std::vector<uint8_t> m_inContact;   ///< per particle, then per node: in contact last step
+    std::size_t m_aliveElementsAtBuild = std::numeric_limits<std::size_t>::max();
+    double m_stableDt = std::numeric_limits<double>::infinity();
+    double m_dissipatedEnergy = 0.0;
+    std::size_t m_contactCount = 0;
+};
+
+} // namespace hvi::contact

@@ -1,0 +1,75 @@
+// Structure-of-arrays storage of the Lagrange finite-element bodies: nodes (position,
+// velocity, lumped mass, force) and 4-node quadrilateral elements (connectivity and the
+// material state at the element's single integration point).
+//
+// The element state uses the same field names as sph::ParticleSet (rho, e, p, cs, szz, srr,
+// srz, plasticStrain, damage, body, alive), so the one material pipeline
+// (solver::MaterialPackage) runs over elements and particles alike.
+//
+// Mass: an element carries the true (3D) mass of the ring it sweeps, 2 pi rho0 integral(r dA)
+// (axisymmetric) or rho0 A per unit depth (planar), lumped a quarter to each corner node
+// (Hallquist, LS-DYNA Theory Manual, volume-weighted 2D element). Units: mm, us, mg (km/s,
+// GPa, g/cm^3, MJ/kg); see docs/conventions.md.
+#pragma once
+
+#include "scene/Scene.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace hvi::fe {
+
+struct NodeSet {
+    std::vector<double> z, r;         ///< position [mm]
+    std::vector<double> vz, vr;       ///< velocity [km/s]
+    std::vector<double> mass;         ///< lumped mass [mg] (never changes: erosion keeps it)
+    std::vector<double> fz, fr;       ///< force of the current step [mg mm/us^2 = kN]
+    std::vector<int32_t> body;        ///< scene body index
+    std::vector<uint8_t> alive;       ///< 0 once deleted (runaway, left the domain)
+    std::vector<uint8_t> onAxis;      ///< axisymmetric: started at r = 0, kept there
+    std::vector<int32_t> elementCount; ///< alive elements using the node (0: a free node)
+
+    std::size_t size() const { return z.size(); }
+};
+
+struct ElementSet {
+    std::vector<int32_t> connectivity; ///< 4 node indices per element, counter-clockwise
+    std::vector<int32_t> body;         ///< scene body index
+    std::vector<uint8_t> alive;        ///< 0 once eroded
+    std::vector<double> mass;          ///< [mg]
+    std::vector<double> rho, e, p, cs; ///< g/cm^3, MJ/kg, GPa, km/s
+    std::vector<double> q;             ///< artificial bulk viscosity pressure [GPa]
+    std::vector<double> szz, srr, srz; ///< stress deviator [GPa] (empty without strength)
+    std::vector<double> plasticStrain; ///< [-] (empty without strength)
+    std::vector<double> damage;        ///< [-] (empty without strength)
+    std::vector<double> geometricStrain; ///< accumulated effective total strain [-]
+
+    std::size_t size() const { return body.size(); }
+    bool hasStrength() const { return m_withStrength; }
+    /// Allocates the strength arrays (zero) for every element.
+    void enableStrength();
+    /// Node a (0..3) of element i.
+    int32_t node(std::size_t i, int a) const { return connectivity[4 * i + static_cast<std::size_t>(a)]; }
+
+private:
+    bool m_withStrength = false;
+};
+
+/// The index ranges one body occupies.
+struct BodyMesh {
+    std::size_t firstNode = 0, nodeCount = 0;
+    std::size_t firstElement = 0, elementCount = 0;
+    std::size_t divisionsZ = 0, divisionsR = 0;
+    double elementSize = 0.0; ///< the larger edge of the structured cells [mm]
+};
+
+/// Meshes a plate or rectangle body with a structured grid of n_z x n_r quadrilaterals
+/// (n = ceil(length / spacing), as geometry::GmshMesher, so the .msh written beside a run is
+/// the same mesh), at density rho0 and specific energy e0, moving with the body's velocity.
+/// Spheres cannot be meshed (InputError naming the body).
+BodyMesh meshBody(const scene::Body& body, int32_t bodyIndex, double rho0, double e0,
+                  bool axisymmetric, NodeSet& nodes, ElementSet& elements);
+
+} // namespace hvi::fe

@@ -1,0 +1,387 @@
+#include "fe/FeSolid.hpp"
+
+#include "core/Parallel.hpp"
+#include "core/Units.hpp"
+#include "fe/QuadKinematics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <omp.h>
+
+namespace hvi::fe {
+
+namespace {
+
+QuadState gather(const NodeSet& nodes, const ElementSet& elements, std::size_t i) {
+    QuadState q;
+    for (int a = 0; a < 4; ++a) {
+        const auto n = static_cast<std::size_t>(elements.node(i, a));
+        const auto k = static_cast<std::size_t>(a);
+        q.z[k] = nodes.z[n];
+        q.r[k] = nodes.r[n];
+        q.vz[k] = nodes.vz[n];
+        q.vr[k] = nodes.vr[n];
+    }
+    return q;
+}
+
+double sweptVolume(const QuadGeometry& g, bool axisymmetric) {
+    return axisymmetric ? 2.0 * units::kPi * g.centroidR * g.area : g.area;
+}
+
+struct StepVote {
+    double dt = std::numeric_limits<double>::infinity();
+    int32_t element = -1;
+    void offer(double candidate, int32_t i) {
+        if (candidate < dt || (candidate == dt && i < element)) {
+            dt = candidate;
+            element = i;
+        }
+    }
+};
+
+} // namespace
+
+FeSolid::FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
+                 std::vector<double> erosionFactor)
+    : m_options(options), m_nodes(std::move(nodes)), m_elements(std::move(elements)),
+      m_erosionFactor(std::move(erosionFactor)) {
+    const std::size_t ne = m_elements.size();
+    const std::size_t nn = m_nodes.size();
+    m_rates.resize(ne);
+    m_elementForce.assign(8 * ne, 0.0);
+    m_hourglassRate.assign(ne, 0.0);
+    m_volumetricRate.assign(ne, 0.0);
+    m_previousEnergy.assign(ne, 0.0);
+    m_previousPressure.assign(ne, 0.0);
+    m_previousDeviator.assign(3 * ne, 0.0);
+    m_volume.assign(ne, 0.0);
+    m_volumeChange.assign(ne, 0.0);
+    m_erode.assign(ne, 0);
+    m_hourglassWork.assign(ne, 0.0);
+    // Node -> element adjacency.
+    m_nodeElementOffset.assign(nn + 1, 0);
+    for (const int32_t n : m_elements.connectivity) {
+        ++m_nodeElementOffset[static_cast<std::size_t>(n) + 1];
+    }
+    for (std::size_t n = 0; n < nn; ++n) {
+        m_nodeElementOffset[n + 1] += m_nodeElementOffset[n];
+    }
+    m_nodeElements.assign(m_elements.connectivity.size(), 0);
+    std::vector<int64_t> fill(m_nodeElementOffset.begin(), m_nodeElementOffset.end() - 1);
+    for (std::size_t i = 0; i < ne; ++i) {
+        for (int a = 0; a < 4; ++a) {
+            const auto n = static_cast<std::size_t>(m_elements.node(i, a));
+            // Slot = 4 * element + corner, so the gather knows which corner force to take.
+            m_nodeElements[static_cast<std::size_t>(fill[n]++)] =
+                static_cast<int32_t>(4 * i + static_cast<std::size_t>(a));
+        }
+    }
+    for (std::size_t i = 0; i < ne; ++i) {
+        const QuadGeometry g = quadGeometry(gather(m_nodes, m_elements, i));
+        m_volume[i] = sweptVolume(g, m_options.axisymmetric);
+    }
+}
+
+void FeSolid::selectEvaluated() {
+    // An element whose nodes are all at rest and whose material is in its reference state
+    // (no pressure, no viscosity, no deviator) has zero strain rate and exerts no force:
+    // skipping it is exact.
+    const auto& el = m_elements;
+    const auto& nd = m_nodes;
+    const bool strength = el.hasStrength();
+    m_evaluated.clear();
+    for (std::size_t i = 0; i < el.size(); ++i) {
+        if (!el.alive[i]) {
+            continue;
+        }
+        bool awake = el.p[i] != 0.0 || el.q[i] != 0.0 ||
+                     (strength && (el.szz[i] != 0.0 || el.srr[i] != 0.0 || el.srz[i] != 0.0));
+        for (int a = 0; a < 4 && !awake; ++a) {
+            const auto n = static_cast<std::size_t>(el.node(i, a));
+            awake = nd.vz[n] != 0.0 || nd.vr[n] != 0.0;
+        }
+        if (awake) {
+            m_evaluated.push_back(static_cast<int32_t>(i));
+        }
+    }
+}
+
+void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
+    auto& el = m_elements;
+    const auto& nd = m_nodes;
+    const bool axi = m_options.axisymmetric;
+    const bool strength = el.hasStrength();
+    const double cq = m_options.bulkQuadratic, cl = m_options.bulkLinear;
+    selectEvaluated();
+    const std::size_t count = m_evaluated.size();
+
+    // 1-2: kinematics at mid-step, density from the end-of-step swept volume, bulk viscosity,
+    // geometric strain.
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto i = static_cast<std::size_t>(m_evaluated[k]);
+        const QuadState end = gather(nd, el, i);
+        QuadState mid = end;
+        for (std::size_t a = 0; a < 4; ++a) {
+            mid.z[a] -= 0.5 * dt * end.vz[a];
+            mid.r[a] -= 0.5 * dt * end.vr[a];
+        }
+        const QuadGeometry gMid = quadGeometry(mid);
+        const QuadGeometry gEnd = quadGeometry(end);
+        m_previousEnergy[i] = el.e[i];
+        m_previousPressure[i] = el.p[i];
+        if (strength) {
+            m_previousDeviator[3 * i] = el.szz[i];
+            m_previousDeviator[3 * i + 1] = el.srr[i];
+            m_previousDeviator[3 * i + 2] = el.srz[i];
+        }
+        if (!(gEnd.area > 0.0) || !(gMid.area > 0.0)) {
+            m_erode[i] = 1; // inverted: erode (its state is left as it was)
+            m_volumeChange[i] = 0.0;
+            m_hourglassWork[i] = 0.0;
+            m_volumetricRate[i] = 0.0;
+            continue;
+        }
+        const QuadVelocityGradient l = velocityGradient(mid, gMid);
+        const double hoop =
+            axi ? 0.25 * (end.vr[0] + end.vr[1] + end.vr[2] + end.vr[3]) / gMid.meanR : 0.0;
+        m_rates.dvzDz[i] = l.zz;
+        m_rates.dvzDr[i] = l.zr;
+        m_rates.dvrDz[i] = l.rz;
+        m_rates.dvrDr[i] = l.rr;
+        m_rates.hoopRate[i] = hoop;
+        const double trace = l.zz + l.rr + hoop;
+        const double mean = trace / 3.0;
+        const double ezz = l.zz - mean, err = l.rr - mean, ett = hoop - mean;
+        const double ezr = 0.5 * (l.zr + l.rz);
+        const double rate =
+            std::sqrt((2.0 / 3.0) * (ezz * ezz + err * err + ett * ett + 2.0 * ezr * ezr));
+        m_rates.strainRate[i] = rate;
+        el.geometricStrain[i] += dt * rate;
+        m_volumetricRate[i] = trace;
+        if (el.geometricStrain[i] > m_erosionFactor[static_cast<std::size_t>(el.body[i])]) {
+            // Eroded on the strain of this step, before its material update: an element this
+            // distorted is close to inversion, and its end-of-step state would be meaningless.
+            m_erode[i] = 1;
+            m_volumeChange[i] = 0.0;
+            m_hourglassWork[i] = 0.0;
+            continue;
+        }
+        // Work of the hourglass force over the step, returned to the element as heat.
+        const auto gamma = hourglassBase(end, gEnd);
+        double qz = 0.0, qr = 0.0;
+        for (std::size_t a = 0; a < 4; ++a) {
+            qz += gamma[a] * end.vz[a];
+            qr += gamma[a] * end.vr[a];
+        }
+        m_hourglassWork[i] = dt * m_hourglassRate[i] * (qz * qz + qr * qr);
+
+        const double volume = sweptVolume(gEnd, axi);
+        m_volumeChange[i] = volume - m_volume[i];
+        m_volume[i] = volume;
+        el.rho[i] = el.mass[i] / volume;
+        const double length = std::sqrt(gEnd.area);
+        el.q[i] = trace < 0.0
+                      ? el.rho[i] * length * (cq * length * trace * trace - cl * el.cs[i] * trace)
+                      : 0.0;
+    }
+
+    // 3: deviator (Jaumann rate over the step, then radial return and damage).
+    if (strength) {
+        materials.addStressRates(el, m_evaluated, m_rates);
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+        for (std::size_t k = 0; k < count; ++k) {
+            const auto i = static_cast<std::size_t>(m_evaluated[k]);
+            el.szz[i] += dt * m_rates.dszz[i];
+            el.srr[i] += dt * m_rates.dsrr[i];
+            el.srz[i] += dt * m_rates.dsrz[i];
+        }
+        materials.applyPlasticity(el, m_rates, m_evaluated);
+    }
+
+    // 4: energy, with the pressure work at the mean of the start and a predicted end pressure.
+    auto energyUpdate = [&](bool predictor) {
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+        for (std::size_t k = 0; k < count; ++k) {
+            const auto i = static_cast<std::size_t>(m_evaluated[k]);
+            if (m_erode[i]) {
+                continue;
+            }
+            const double dV = m_volumeChange[i];
+            double deviatoricWork = 0.0;
+            if (strength) {
+                const double szz = 0.5 * (el.szz[i] + m_previousDeviator[3 * i]);
+                const double srr = 0.5 * (el.srr[i] + m_previousDeviator[3 * i + 1]);
+                const double srz = 0.5 * (el.srz[i] + m_previousDeviator[3 * i + 2]);
+                const double stt = -(szz + srr);
+                const double power = szz * m_rates.dvzDz[i] + srr * m_rates.dvrDr[i] +
+                                     stt * m_rates.hoopRate[i] +
+                                     srz * (m_rates.dvzDr[i] + m_rates.dvrDz[i]);
+                const double meanVolume = m_volume[i] - 0.5 * dV;
+                deviatoricWork = dt * power * meanVolume;
+            }
+            const double pressure =
+                predictor ? m_previousPressure[i] : 0.5 * (m_previousPressure[i] + el.p[i]);
+            el.e[i] = m_previousEnergy[i] +
+                      (-(pressure + el.q[i]) * dV + deviatoricWork + m_hourglassWork[i]) /
+                          el.mass[i];
+        }
+    };
+    energyUpdate(true);
+    materials.updatePressure(el);
+    energyUpdate(false);
+    materials.updatePressure(el);
+
+    // 5: erosion.
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto i = static_cast<std::size_t>(m_evaluated[k]);
+        const auto b = static_cast<std::size_t>(el.body[i]);
+        const bool failed = strength && el.damage[i] >= 1.0;
+        if (m_erode[i] || failed || el.geometricStrain[i] > m_erosionFactor[b]) {
+            erode(i);
+        }
+    }
+
+    // 6: forces at the end-of-step geometry.
+    assembleForces();
+}
+
+void FeSolid::erode(std::size_t i) {
+    auto& el = m_elements;
+    el.alive[i] = 0;
+    m_erode[i] = 0;
+    m_erodedEnergy += el.mass[i] * el.e[i];
+    ++m_erodedCount;
+    for (int a = 0; a < 4; ++a) {
+        --m_nodes.elementCount[static_cast<std::size_t>(el.node(i, a))];
+    }
+}
+
+void FeSolid::computeForces(const solver::MaterialPackage& materials) {
+    materials.updatePressure(m_elements);
+    // The time step of an undisturbed element (the floor for every dormant element, which
+    // does not vote while skipped).
+    StepVote vote;
+    for (std::size_t i = 0; i < m_elements.size(); ++i) {
+        if (!m_elements.alive[i]) {
+            continue;
+        }
+        const QuadGeometry g = quadGeometry(gather(m_nodes, m_elements, i));
+        if (g.area > 0.0 && m_elements.cs[i] > 0.0) {
+            vote.offer(g.area / g.maxDiagonal / m_elements.cs[i], static_cast<int32_t>(i));
+        }
+    }
+    m_referenceDt = vote.dt;
+    selectEvaluated();
+    assembleForces();
+}
+
+void FeSolid::assembleForces() {
+    auto& el = m_elements;
+    auto& nd = m_nodes;
+    const bool axi = m_options.axisymmetric;
+    const bool strength = el.hasStrength();
+    const double kappa = m_options.hourglassCoefficient;
+    const double cq = m_options.bulkQuadratic, cl = m_options.bulkLinear;
+    std::fill(m_elementForce.begin(), m_elementForce.end(), 0.0);
+    const std::size_t count = m_evaluated.size();
+    std::vector<StepVote> votes(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel if (count > kParallelMinItems)
+    {
+        StepVote local;
+#pragma omp for schedule(static)
+        for (std::size_t k = 0; k < count; ++k) {
+            const auto i = static_cast<std::size_t>(m_evaluated[k]);
+            if (!el.alive[i]) {
+                m_hourglassRate[i] = 0.0;
+                continue;
+            }
+            const QuadState s = gather(nd, el, i);
+            const QuadGeometry g = quadGeometry(s);
+            if (!(g.area > 0.0)) {
+                continue; // eroded at the next update
+            }
+            const double volume = sweptVolume(g, axi);
+            const double pq = el.p[i] + el.q[i];
+            const double szz = strength ? el.szz[i] : 0.0;
+            const double srr = strength ? el.srr[i] : 0.0;
+            const double srz = strength ? el.srz[i] : 0.0;
+            const double sigmaZZ = szz - pq, sigmaRR = srr - pq, sigmaTT = -(szz + srr) - pq;
+            const double hoopForce = axi ? volume * sigmaTT / (4.0 * g.meanR) : 0.0;
+            // Hourglass control.
+            const double length = std::sqrt(g.area);
+            const double chg = 0.25 * kappa * el.rho[i] * el.cs[i] * volume / length;
+            m_hourglassRate[i] = chg;
+            const auto gamma = hourglassBase(s, g);
+            double qz = 0.0, qr = 0.0;
+            for (std::size_t a = 0; a < 4; ++a) {
+                qz += gamma[a] * s.vz[a];
+                qr += gamma[a] * s.vr[a];
+            }
+            double* f = &m_elementForce[8 * i];
+            for (std::size_t a = 0; a < 4; ++a) {
+                f[2 * a] = -volume * (sigmaZZ * g.bz[a] + srz * g.br[a]) - chg * qz * gamma[a];
+                f[2 * a + 1] = -volume * (srz * g.bz[a] + sigmaRR * g.br[a]) - hoopForce -
+                               chg * qr * gamma[a];
+            }
+            // Element time step.
+            const double trace = m_volumetricRate[i];
+            const double lengthDt = g.area / g.maxDiagonal;
+            const double c = el.cs[i];
+            const double qSpeed = trace < 0.0 ? cq * lengthDt * std::fabs(trace) + cl * c : 0.0;
+            const double denom = qSpeed + std::sqrt(qSpeed * qSpeed + c * c);
+            if (denom > 0.0) {
+                local.offer(lengthDt / denom, static_cast<int32_t>(i));
+            }
+        }
+        votes[static_cast<std::size_t>(omp_get_thread_num())] = local;
+    }
+    StepVote vote;
+    vote.offer(m_referenceDt, -1);
+    for (const auto& v : votes) {
+        if (v.element >= 0) {
+            vote.offer(v.dt, v.element);
+        }
+    }
+    m_stableDt = vote.dt;
+    m_limitingElement = vote.element;
+
+    // Gather the corner forces per node in a fixed (element) order.
+    const std::size_t nn = nd.size();
+#pragma omp parallel for schedule(static) if (nn > kParallelMinItems)
+    for (std::size_t n = 0; n < nn; ++n) {
+        double fz = 0.0, fr = 0.0;
+        for (int64_t k = m_nodeElementOffset[n]; k < m_nodeElementOffset[n + 1]; ++k) {
+            const auto slot = static_cast<std::size_t>(m_nodeElements[static_cast<std::size_t>(k)]);
+            fz += m_elementForce[2 * slot];
+            fr += m_elementForce[2 * slot + 1];
+        }
+        nd.fz[n] = fz;
+        nd.fr[n] = fr;
+    }
+}
+
+void FeSolid::restoreErosion(double energy, std::size_t count) {
+    m_erodedEnergy = energy;
+    m_erodedCount = count;
+}
+
+void FeSolid::recountNodeElements() {
+    std::fill(m_nodes.elementCount.begin(), m_nodes.elementCount.end(), 0);
+    for (std::size_t i = 0; i < m_elements.size(); ++i) {
+        if (m_elements.alive[i]) {
+            for (int a = 0; a < 4; ++a) {
+                ++m_nodes.elementCount[static_cast<std::size_t>(m_elements.node(i, a))];
+            }
+        }
+    }
+    // Volumes follow the restored positions.
+    for (std::size_t i = 0; i < m_elements.size(); ++i) {
+        const QuadGeometry g = quadGeometry(gather(m_nodes, m_elements, i));
+        m_volume[i] = sweptVolume(g, m_options.axisymmetric);
+    }
+}
+
+} // namespace hvi::fe

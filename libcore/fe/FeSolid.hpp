@@ -1,0 +1,115 @@
+// The Lagrange finite-element package: 4-node quadrilaterals with one-point integration,
+// viscous hourglass control, artificial bulk viscosity and erosion, sharing the material
+// pipeline (solver::MaterialPackage) with the SPH particles.
+//
+// One update, inside the time loop's kick-drift-kick step (central difference, Hallquist,
+// LS-DYNA Theory Manual section 2): the nodes have drifted to x^{n+1} with the half-step
+// velocities v^{n+1/2}; update() then
+//   1. forms the velocity gradient at the mid-step geometry x^{n+1/2} = x^{n+1} - dt/2 v,
+//      with the hoop rate D_thth = mean(v_r) / mean(r) (axisymmetric);
+//   2. density from the exact swept volume, rho = m / V, V = 2 pi integral(r dA) (mass is
+//      conserved per element by construction);
+//   3. deviator: Jaumann rate, radial return and Johnson-Cook damage (MaterialPackage);
+//   4. energy: e^{n+1} = e^n - (p-bar + q) dV/m + dt S-bar:D V-bar/m, with p-bar the mean of
+//      the start and a predicted end pressure (one predictor pass of the EOS), so the
+//      pressure work is second-order accurate;
+//   5. erosion (below);
+//   6. nodal forces at x^{n+1}: f_a = -V (B_a^T sigma) - V sigma_thth / (4 r-bar) e_r, plus
+//      the viscous hourglass force (Flanagan & Belytschko 1981, eq. 51 in 2D form)
+//      f_a = -c_hg (sum_b gamma_b v_b) gamma_a, c_hg = kappa rho c V / (4 sqrt(A)), whose
+//      dissipated power goes back into the element's internal energy, so energy is conserved.
+// Artificial bulk viscosity (von Neumann-Richtmyer quadratic + Landshoff linear, as LS-DYNA):
+//   q = rho l (C_Q l (tr D)^2 - C_L c tr D) for tr D < 0, else 0;  l = sqrt(A).
+// Time step (LS-DYNA Theory Manual eq. 22.6 in 2D): dt_e = l_e / (Q + sqrt(Q^2 + c^2)),
+//   Q = C_Q l |tr D| + C_L c for compression (else 0), l_e = A / longest diagonal.
+// Erosion (ANSYS Autodyn's geometric-strain erosion, the source study's calibrated rule): an
+// element is removed when its accumulated effective strain integral(sqrt(2/3 D':D') dt)
+// exceeds the body's erosion factor, when its Johnson-Cook damage reaches 1, or when it
+// inverts (A <= 0). Its mass stays on its nodes; its internal energy leaves the calculation
+// and is booked in the ledger (erodedEnergy). A node left with no alive element is a free
+// mass point: it keeps its momentum and still takes part in contact.
+// Dormant elements (all nodes at rest, no pressure, no deviator) have exactly zero rates and
+// forces, and are skipped (the same "compute only what the scene needs" rule as SPH).
+//
+// Units: mm, us, mg (km/s, GPa, g/cm^3, MJ/kg; force mg mm/us^2 = kN, energy J).
+#pragma once
+
+#include "fe/ElementRates.hpp"
+#include "fe/FeMesh.hpp"
+#include "solver/MaterialPackage.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace hvi::fe {
+
+struct FeOptions {
+    bool axisymmetric = true;
+    double hourglassCoefficient = 0.1; ///< kappa [-]
+    double bulkLinear = 0.06;          ///< C_L [-]
+    double bulkQuadratic = 1.5;        ///< C_Q [-]
+};
+
+class FeSolid {
+public:
+    /// Takes the meshed nodes and elements. `erosionFactor[b]` is body b's erosion strain
+    /// (scene bodies; ignored for bodies without elements).
+    FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
+            std::vector<double> erosionFactor);
+
+    /// Advances the element state over dt [us] with the nodes at x^{n+1} carrying v^{n+1/2},
+    /// erodes, and leaves the internal + hourglass force of every node in nodes().fz/fr.
+    void update(double dt, const solver::MaterialPackage& materials);
+
+    /// Forces at the current state without advancing anything (start of a run, resume).
+    void computeForces(const solver::MaterialPackage& materials);
+
+    /// Stable time step of the last update, before the Courant factor [us] (+inf: no element).
+    double stableTimeStep() const { return m_stableDt; }
+    int32_t limitingElement() const { return m_limitingElement; }
+
+    NodeSet& nodes() { return m_nodes; }
+    const NodeSet& nodes() const { return m_nodes; }
+    ElementSet& elements() { return m_elements; }
+    const ElementSet& elements() const { return m_elements; }
+
+    /// Internal energy that eroded elements took out of the calculation [J], and their count.
+    double erodedEnergy() const { return m_erodedEnergy; }
+    std::size_t erodedCount() const { return m_erodedCount; }
+    std::size_t evaluatedCount() const { return m_evaluated.size(); }
+    void restoreErosion(double energy, std::size_t count);
+    /// Recounts the alive elements of every node (after the alive flags were restored).
+    void recountNodeElements();
+
+private:
+    void selectEvaluated();
+    /// Element forces at the current geometry and state, gathered per node; the time-step vote.
+    void assembleForces();
+    void erode(std::size_t element);
+
+    FeOptions m_options;
+    NodeSet m_nodes;
+    ElementSet m_elements;
+    ElementRates m_rates;
+    std::vector<double> m_erosionFactor;
+    // Node -> elements adjacency (CSR, ascending element order): forces are gathered per node
+    // in a fixed order, so the sums do not depend on the thread count.
+    std::vector<int64_t> m_nodeElementOffset;
+    std::vector<int32_t> m_nodeElements;
+    std::vector<double> m_elementForce;   ///< 8 per element: (fz, fr) of corners 0..3
+    std::vector<double> m_hourglassRate;  ///< c_hg per element [mg/us], set in update()
+    std::vector<int32_t> m_evaluated;     ///< alive, non-dormant elements of this update
+    std::vector<double> m_volumetricRate; ///< tr D of the last update [1/us]
+    std::vector<double> m_previousEnergy, m_previousPressure, m_previousDeviator;
+    std::vector<double> m_volume, m_volumeChange; ///< swept volume [mm^3] and its last change
+    std::vector<double> m_hourglassWork;          ///< hourglass work of the last update [J]
+    std::vector<uint8_t> m_erode;                 ///< inverted this update: erode
+    double m_referenceDt = std::numeric_limits<double>::infinity(); ///< undisturbed elements
+    double m_stableDt = 0.0;
+    int32_t m_limitingElement = -1;
+    double m_erodedEnergy = 0.0;
+    std::size_t m_erodedCount = 0;
+};
+
+} // namespace hvi::fe
