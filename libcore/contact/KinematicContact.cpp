@@ -14,6 +14,8 @@ namespace hvi::contact {
 namespace {
 
 constexpr int kMaxContactsPerSlave = 4;
+/// A slave closer than this fraction of its body's spacing touches its master.
+constexpr double kTouchTolerance = 0.01;
 
 /// One slave's candidate contacts of this step (found in parallel, resolved serially).
 struct SlaveContacts {
@@ -385,50 +387,59 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
                 vn = (*sl.vz - (*half.vz)[j]) * nz + (*sl.vr - (*half.vr)[j]) * nr;
                 invSum += 1.0 / ps.mass[j];
             }
+            // Touching (within a hundredth of the slave body's spacing, so a pair resting on
+            // each other does not flicker between "new" and "lasting").
+            if (gap < kTouchTolerance * m_bodies[static_cast<std::size_t>(sl.body)].size) {
+                nowInContact[k] = 1;
+            }
             // The approach the step may still make: it closes the gap and no more.
             const double allowed = std::max(gap, 0.0) / dt;
             if (-vn <= allowed) {
                 continue;
             }
             const double impulse = (-vn - allowed) / invSum;
-            double gained = kick(*sl.vz, *sl.vr, sl.mass, impulse * invS, nz, nr);
+            const double slaveGain = kick(*sl.vz, *sl.vr, sl.mass, impulse * invS, nz, nr);
+            double masterGain = 0.0;
             if (target >= 0) {
                 for (const auto& [node, w] : {std::pair{a, wa}, std::pair{b, wb}}) {
-                    gained += kick(nd.vz[node], nd.vr[node], nd.mass[node],
-                                   -impulse * w / nd.mass[node], nz, nr);
+                    masterGain += kick(nd.vz[node], nd.vr[node], nd.mass[node],
+                                       -impulse * w / nd.mass[node], nz, nr);
                 }
             } else {
-                gained += kick((*half.vz)[j], (*half.vr)[j], ps.mass[j], -impulse / ps.mass[j],
-                               nz, nr);
+                masterGain = kick((*half.vz)[j], (*half.vr)[j], ps.mass[j],
+                                  -impulse / ps.mass[j], nz, nr);
             }
             nowInContact[k] = 1;
             ++m_contactCount;
-            // A new contact is a collision: the kinetic energy it takes becomes heat, half on
-            // each side, so total energy is conserved. A lasting contact only cancels the
-            // kick of the forces pressing the pair together, which the elements never paid
-            // for (their work follows the net motion): no heat.
-            if (wasInContact || gained >= 0.0) {
+            // Energy. A new contact is a collision: the kinetic energy it takes becomes heat,
+            // half on each side, so total energy is conserved. So is every contact with a
+            // particle: the compatible SPH energy equation has already paid, from internal
+            // energy, for the velocity the constraint removes. A lasting contact between FE
+            // nodes and segments only cancels the kick of the forces pressing the pair
+            // together, which the elements never paid for (their work follows the net motion,
+            // computed after this constraint): no heat.
+            if (!wasInContact || isParticle || target < 0) {
+                const double heat = -(slaveGain + masterGain);
+                m_dissipatedEnergy += heat;
+                const double masterShare = 0.5 * heat;
+                double slaveShare = 0.5 * heat;
+                if (target < 0) {
+                    heatParticle(j, masterShare);
+                } else if (masterElement >= 0) {
+                    heatElement(masterElement, masterShare);
+                } else {
+                    slaveShare = heat;
+                }
+                if (isParticle) {
+                    heatParticle(idx, slaveShare);
+                } else if (nd.elementCount[idx] > 0 && m_nodeElement[idx] >= 0) {
+                    heatElement(m_nodeElement[idx], slaveShare);
+                } else if (target >= 0 && masterElement >= 0) {
+                    heatElement(masterElement, slaveShare); // a free node: all to the master
+                } else if (target < 0) {
+                    heatParticle(j, slaveShare);
+                }
                 continue;
-            }
-            const double heat = -gained;
-            m_dissipatedEnergy += heat;
-            const double masterShare = 0.5 * heat;
-            double slaveShare = 0.5 * heat;
-            if (target < 0) {
-                heatParticle(j, masterShare);
-            } else if (masterElement >= 0) {
-                heatElement(masterElement, masterShare);
-            } else {
-                slaveShare = heat;
-            }
-            if (isParticle) {
-                heatParticle(idx, slaveShare);
-            } else if (nd.elementCount[idx] > 0 && m_nodeElement[idx] >= 0) {
-                heatElement(m_nodeElement[idx], slaveShare);
-            } else if (target >= 0 && masterElement >= 0) {
-                heatElement(masterElement, slaveShare); // a free node: all to the master
-            } else if (target < 0) {
-                heatParticle(j, slaveShare);
             }
         }
     }

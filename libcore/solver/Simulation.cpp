@@ -498,11 +498,42 @@ void Simulation::updateProgress() {
         if (m_penetrated[b] || body.role == scene::BodyRole::Projectile) {
             continue;
         }
-        const double rear = body.shape.boundZMax() + 0.5 * m_fills[b].spacing;
+        const double spacing = m_fills[b].spacing;
+        const double rear = body.shape.boundZMax() + 0.5 * spacing;
         const double rLo = body.shape.boundRMin(), rHi = body.shape.boundRMax();
+        // An FE body bulges without breaking: its rear face is where its meshed material is
+        // now, per radial bin of one element (bins it has left, a hole, keep the initial
+        // face). SPH bodies keep the initial face (their own spall counts as debris).
+        std::vector<double> rearOf;
+        const bool fe = body.discretization == scene::Discretization::Fe;
+        if (fe) {
+            rearOf.assign(static_cast<std::size_t>((rHi - rLo) / spacing) + 2,
+                          -std::numeric_limits<double>::infinity());
+            for (std::size_t k = 0; k < nodes->size(); ++k) {
+                if (static_cast<std::size_t>(nodes->body[k]) == b && nodes->elementCount[k] > 0) {
+                    const double bin = std::floor((nodes->r[k] - rLo) / spacing);
+                    if (bin >= 0.0 && bin < static_cast<double>(rearOf.size())) {
+                        auto& slot = rearOf[static_cast<std::size_t>(bin)];
+                        slot = std::max(slot, nodes->z[k] + 0.5 * spacing);
+                    }
+                }
+            }
+        }
+        auto behind = [&](double z, double r) {
+            if (r < rLo || r > rHi) {
+                return false;
+            }
+            if (!fe) {
+                return z > rear;
+            }
+            const auto bin = static_cast<std::size_t>((r - rLo) / spacing);
+            const double face = bin < rearOf.size() && std::isfinite(rearOf[bin])
+                                    ? std::max(rearOf[bin], rear)
+                                    : rear;
+            return z > face;
+        };
         for (std::size_t i = 0; i < ps.size(); ++i) {
-            if (ps.alive[i] && static_cast<std::size_t>(ps.body[i]) != b && ps.z[i] > rear &&
-                ps.r[i] >= rLo && ps.r[i] <= rHi) {
+            if (ps.alive[i] && static_cast<std::size_t>(ps.body[i]) != b && behind(ps.z[i], ps.r[i])) {
                 m_penetrated[b] = 1;
                 newPenetration = true;
                 break;
@@ -510,7 +541,7 @@ void Simulation::updateProgress() {
         }
         for (std::size_t k = 0; nodes && !m_penetrated[b] && k < nodes->size(); ++k) {
             if (nodes->alive[k] && static_cast<std::size_t>(nodes->body[k]) != b &&
-                nodes->z[k] > rear && nodes->r[k] >= rLo && nodes->r[k] <= rHi) {
+                behind(nodes->z[k], nodes->r[k])) {
                 m_penetrated[b] = 1;
                 newPenetration = true;
             }
