@@ -94,6 +94,13 @@ public:
     void restoreDissipatedEnergy(double energy) { m_dissipatedEnergy = energy; }
     /// Contacts resolved in the last resolve().
     std::size_t contactCount() const { return m_contactCount; }
+    /// Which slaves touched in the last step (particles, then nodes) and the last vote: the
+    /// state a checkpoint must carry for a resumed run to repeat the original bit for bit.
+    const std::vector<uint8_t>& contactFlags() const { return m_inContact; }
+    void restoreState(double stableDt, std::vector<uint8_t> flags) {
+        m_stableDt = stableDt;
+        m_inContact = std::move(flags);
+    }
     /// Master segments (FE surface edges) in use.
     std::size_t segmentCount() const { return m_segA.size(); }
 

@@ -79,6 +79,16 @@ public:
     std::size_t erodedCount() const { return m_erodedCount; }
     std::size_t evaluatedCount() const { return m_evaluated.size(); }
     void restoreErosion(double energy, std::size_t count);
+    /// The state of the last update that the next one reads (checkpointed for an exact
+    /// resume): tr D and the hourglass damping rate of each element, the time-step vote.
+    std::vector<double>& volumetricRate() { return m_volumetricRate; }
+    const std::vector<double>& volumetricRate() const { return m_volumetricRate; }
+    std::vector<double>& hourglassRate() { return m_hourglassRate; }
+    const std::vector<double>& hourglassRate() const { return m_hourglassRate; }
+    void restoreStableTimeStep(double dt, int32_t element) {
+        m_stableDt = dt;
+        m_limitingElement = element;
+    }
     /// Recounts the alive elements of every node (after the alive flags were restored).
     void recountNodeElements();
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <omp.h>
 
 namespace hvi::solver {
@@ -126,6 +127,19 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
     }
     s.ints["body"] = ps.body;
     s.ints["alive"] = std::vector<int32_t>(ps.alive.begin(), ps.alive.end());
+    // The rates of the last step: the next step's first kick uses them, and they belong to
+    // the step's predicted state, so they cannot be recomputed from the final one.
+    const auto& rt = sim.rates();
+    s.doubles["rate_az"] = rt.az;
+    s.doubles["rate_ar"] = rt.ar;
+    s.doubles["rate_drho"] = rt.drho;
+    s.doubles["rate_de"] = rt.de;
+    s.doubles["rate_dh"] = rt.dh;
+    if (ps.hasStrength()) {
+        s.doubles["rate_dszz"] = rt.dszz;
+        s.doubles["rate_dsrr"] = rt.dsrr;
+        s.doubles["rate_dsrz"] = rt.dsrz;
+    }
     if (const fe::FeSolid* fe = sim.finiteElements()) {
         const auto& nd = fe->nodes();
         const auto& el = fe->elements();
@@ -140,6 +154,10 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
         s.doubles["element_e"] = el.e;
         s.doubles["element_q"] = el.q;
         s.doubles["element_geometric_strain"] = el.geometricStrain;
+        s.doubles["element_volumetric_rate"] = fe->volumetricRate();
+        s.doubles["element_hourglass_rate"] = fe->hourglassRate();
+        const auto& flags = sim.contact()->contactFlags();
+        s.ints["contact_flags"] = std::vector<int32_t>(flags.begin(), flags.end());
         s.ints["element_alive"] = std::vector<int32_t>(el.alive.begin(), el.alive.end());
         if (el.hasStrength()) {
             s.doubles["element_szz"] = el.szz;
@@ -152,7 +170,10 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
     const Totals t = sim.totals();
     s.extra = {{"dt_us", sim.lastDt()},
                {"initial_energy_J", sim.initialEnergy()},
-               {"deleted_energy_J", t.deletedEnergy},
+               // Without the eroded elements' share, which is restored with the FE state.
+               {"deleted_energy_J", t.deletedEnergy - (sim.finiteElements()
+                                                           ? sim.finiteElements()->erodedEnergy()
+                                                           : 0.0)},
                {"deleted_mass_mg", t.deletedMass},
                {"deleted_momentum_z", t.deletedMomentumZ},
                {"runaway_deleted", sim.runawayDeleted()},
@@ -164,7 +185,12 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
         s.extra["element_count"] = fe->elements().size();
         s.extra["eroded_energy_J"] = fe->erodedEnergy();
         s.extra["eroded_elements"] = fe->erodedCount();
+        s.extra["contact_dt_us"] = sim.contact()->stableTimeStep();
+        s.extra["fe_dt_us"] = fe->stableTimeStep();
+        s.extra["fe_dt_element"] = fe->limitingElement();
     }
+    s.extra["sph_dt_us"] = sim.sphStableTimeStep();
+    s.extra["sph_dt_particle"] = sim.dtLimitingParticle();
     return s;
 }
 
@@ -233,6 +259,8 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
         take("element_e", el.e);
         take("element_q", el.q);
         take("element_geometric_strain", el.geometricStrain);
+        take("element_volumetric_rate", fe->volumetricRate());
+        take("element_hourglass_rate", fe->hourglassRate());
         takeFlags("element_alive", el.alive);
         if (el.hasStrength()) {
             take("element_szz", el.szz);
@@ -248,6 +276,34 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
                      s.extra.at("deleted_energy_J"), s.extra.at("deleted_mass_mg"),
                      s.extra.at("deleted_momentum_z"), s.extra.at("runaway_deleted"),
                      s.extra.at("out_of_domain_deleted"), erodedEnergy, erodedCount);
+    auto& rt = sim.rates();
+    take("rate_az", rt.az);
+    take("rate_ar", rt.ar);
+    take("rate_drho", rt.drho);
+    take("rate_de", rt.de);
+    take("rate_dh", rt.dh);
+    if (ps.hasStrength()) {
+        take("rate_dszz", rt.dszz);
+        take("rate_dsrr", rt.dsrr);
+        take("rate_dsrz", rt.dsrz);
+    }
+    // +inf (nothing to limit) goes through JSON as null.
+    auto dtOf = [&](const char* key) {
+        const auto& v = s.extra.at(key);
+        return v.is_number() ? v.get<double>() : std::numeric_limits<double>::infinity();
+    };
+    std::vector<uint8_t> flags;
+    double feDt = 0.0, contactDt = 0.0;
+    int32_t feElement = -1;
+    if (sim.finiteElements()) {
+        const auto& stored = s.ints.at("contact_flags");
+        flags.assign(stored.begin(), stored.end());
+        feDt = dtOf("fe_dt_us");
+        feElement = s.extra.at("fe_dt_element").get<int32_t>();
+        contactDt = dtOf("contact_dt_us");
+    }
+    sim.restoreVotes(dtOf("sph_dt_us"), s.extra.at("sph_dt_particle").get<int32_t>(), feDt,
+                     feElement, contactDt, std::move(flags));
 }
 
 RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
@@ -355,7 +411,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
             const double wall = secondsSince(t0);
             const double rate = (sim.time() - startTime) / std::max(wall, 1e-9);
             const double eta = rate > 0 ? (scene.run.endTime - sim.time()) / rate : NAN;
-            char line[384];
+            char line[512];
             const int32_t lim = sim.dtLimitingParticle();
             std::string limiter = sim.dtLimiter();
             if (sim.dtLimiter() == "sph" && lim >= 0) {
@@ -366,12 +422,19 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
                               lim, ps.z[lim], ps.r[lim]);
                 limiter = buf;
             }
+            std::string elements;
+            if (const fe::FeSolid* fe = sim.finiteElements()) {
+                elements = "  elements " + std::to_string(fe->evaluatedCount()) + " active/" +
+                           std::to_string(fe->elements().size()) + " (" +
+                           std::to_string(fe->erodedCount()) + " eroded)";
+            }
             std::snprintf(line, sizeof line,
-                          "t %.4f/%.3f us  dt %.2e us (%s)  particles %zu active/%zu  wall %s  "
+                          "t %.4f/%.3f us  dt %.2e us (%s)  particles %zu active/%zu%s  wall %s  "
                           "ETA <= %s  energy error %+.2e",
                           sim.time(), scene.run.endTime, sim.lastDt(), limiter.c_str(),
-                          sim.activeCount(), summary.particles, formatDuration(wall).c_str(),
-                          formatDuration(eta).c_str(), sim.energyError());
+                          sim.activeCount(), summary.particles, elements.c_str(),
+                          formatDuration(wall).c_str(), formatDuration(eta).c_str(),
+                          sim.energyError());
             log(line);
         }
         if (options.checkpointEverySeconds > 0 &&

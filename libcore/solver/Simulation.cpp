@@ -133,6 +133,15 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     updateProgress();
 }
 
+void Simulation::restoreVotes(double sphDt, int32_t sphParticle, double feDt, int32_t feElement,
+                              double contactDt, std::vector<uint8_t> contactFlags) {
+    m_hydro->restoreStableTimeStep(sphDt, sphParticle);
+    if (m_fe) {
+        m_fe->restoreStableTimeStep(feDt, feElement);
+        m_contact->restoreState(contactDt, std::move(contactFlags));
+    }
+}
+
 void Simulation::refreshRates() {
     m_rates.resize(m_particles.size(), m_particles.hasStrength());
     m_materials->updatePressure(m_particles);
@@ -596,11 +605,14 @@ void Simulation::restoreClock(double time, long step, double dt, double initialE
     for (const auto a : m_particles.alive) {
         m_aliveCount += a ? 1 : 0;
     }
+    m_rates.resize(m_particles.size(), m_particles.hasStrength());
+    m_materials->updatePressure(m_particles);
+    computeRates(); // the neighbour lists; the rates themselves come from the checkpoint
     if (m_fe) {
         m_fe->restoreErosion(erodedEnergy, erodedCount);
         m_fe->recountNodeElements();
+        m_feMaterials->updatePressure(m_fe->elements());
     }
-    refreshRates();
     updateProgress();
 }
 

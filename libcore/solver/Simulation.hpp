@@ -70,6 +70,8 @@ public:
     std::size_t aliveCount() const { return m_aliveCount; }
     /// The particle whose stability limit set the last time step (-1 if none).
     int32_t dtLimitingParticle() const { return m_hydro->limitingParticle(); }
+    /// The SPH package's time-step vote before the Courant factor [us].
+    double sphStableTimeStep() const { return m_hydro->stableTimeStep(); }
     std::size_t pairCount() const { return m_neighbours.pairCount(); }
     /// The FE package, null in a scene without FE bodies.
     const fe::FeSolid* finiteElements() const { return m_fe.get(); }
@@ -99,11 +101,20 @@ public:
     std::size_t runawayDeleted() const { return m_runawayDeleted; }
     std::size_t outOfDomainDeleted() const { return m_outOfDomainDeleted; }
 
-    /// Restores time and counters after a checkpoint's particle arrays were loaded.
+    /// Restores time and counters after a checkpoint's particle and FE arrays were loaded, and
+    /// the derived state (pressures, neighbour lists); the caller then restores the rates
+    /// (rates()) and the votes (restoreVotes), which depend on the step's predicted state.
     void restoreClock(double time, long step, double dt, double initialEnergy,
                       double deletedEnergy, double deletedMass, double deletedMomentumZ,
                       std::size_t runaway, std::size_t outOfDomain, double erodedEnergy = 0.0,
                       std::size_t erodedCount = 0);
+    /// The rates of the last step (the first kick of the next step uses them; checkpointed).
+    const sph::ParticleRates& rates() const { return m_rates; }
+    sph::ParticleRates& rates() { return m_rates; }
+    /// Restores, after restoreClock, what the next step reads from the last one: the SPH
+    /// time-step vote, and with FE bodies the FE vote and the contact state.
+    void restoreVotes(double sphDt, int32_t sphParticle, double feDt, int32_t feElement,
+                      double contactDt, std::vector<uint8_t> contactFlags);
     /// Recomputes pressures and rates after the particle arrays were replaced.
     void refreshRates();
 

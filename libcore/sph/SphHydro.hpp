@@ -55,6 +55,11 @@ public:
 
     /// h / signal speed, minimised over the particles of the last evaluate() [us].
     double stableTimeStep() const { return m_stableDt; }
+    /// Sets the vote of the evaluation a checkpoint was taken after (an exact resume).
+    void restoreStableTimeStep(double dt, int32_t particle) {
+        m_stableDt = dt;
+        m_limitingParticle = particle;
+    }
     /// The particle that set stableTimeStep() (for the progress line).
     int32_t limitingParticle() const { return m_limitingParticle; }
 

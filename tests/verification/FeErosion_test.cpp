@@ -98,3 +98,21 @@ TEST(FeErosion, Sweep) {
         list = end;
     }
 }
+
+// The sweep at 0.04 mm (docs/fe-erosion.md) put the threshold between 1.4 km/s (not
+// perforated at 6 us) and 1.6 km/s (perforated); the test checks 1.0 and 2.2 km/s, about 30 %
+// either side.
+TEST(FeErosion, NotPerforatedWellBelowThreshold) {
+    const Outcome o = strike(1.0, 0.04);
+    EXPECT_FALSE(o.perforated);
+    EXPECT_GT(o.eroded, 0U) << "the crater erodes some elements";
+    EXPECT_GT(o.erodedMassMg, 0.0);
+    EXPECT_LT(o.maxEnergyError, 0.05);
+}
+
+TEST(FeErosion, PerforatedWellAboveThreshold) {
+    const Outcome o = strike(2.2, 0.04);
+    EXPECT_TRUE(o.perforated);
+    EXPECT_GT(o.erodedMassMg, 0.0);
+    EXPECT_LT(o.maxEnergyError, 0.05);
+}

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The source study's erosion-factor calibration (issue #5, item 4): the NASA Whipple pair
+# A1076 (perforated) and A1077 (not perforated), SPH projectile and bumper, FE rear wall,
+# with erosion factors 0.5, 1.0 and 1.5. Prints one line per run and leaves the run files,
+# verdicts and pictures in OUTDIR. docs/fe-erosion.md has the measured table.
+# Usage: workflows/erosion-calibration/run.sh [OUTDIR] [SPACING_MM] [THREADS]
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+out="${1:-$root/out/erosion-calibration}"
+spacing="${2:-0.04}"
+threads="${3:-$(nproc)}"
+bin="$root/build/tools"
+tests="$root/../shared/validation/thesis_cases.json"
+mkdir -p "$out"
+for case in A1076 A1077; do
+  for factor in 0.5 1.0 1.5; do
+    name="${case}_erosion_${factor}"
+    sed "s/\"erosion_factor\": 1.5/\"erosion_factor\": ${factor}/" "$here/$case.json" \
+      > "$out/$name.json"
+    start=$(date +%s)
+    "$bin/hvi-run/hvi-run" "$out/$name.json" -o "$out/$name.h5" -q --threads "$threads" \
+      --resolution-mm "$spacing"
+    wall=$(( $(date +%s) - start ))
+    expect=()
+    [ -f "$tests" ] && expect=(--expect "$tests" --case "$case")
+    set +e
+    line=$("$bin/hvi-assess/hvi-assess" "$out/$name.h5" -o "$out/$name.verdict.json" \
+      "${expect[@]}" 2>&1 | tail -1)
+    set -e
+    echo "$case erosion $factor (spacing $spacing mm, ${wall} s): $line"
+  done
+done
