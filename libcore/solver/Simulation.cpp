@@ -48,6 +48,7 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         bm.spec = &m_specs[b];
         bm.strength = body.strength && spec.hasStrength();
         bm.minDensity = m_scene.sph.minDensityRatio * rho0;
+        bm.maxDensity = densityCeiling(spec);
         BodyMaterial em = bm;
         if (body.discretization == scene::Discretization::Fe) {
             const fe::BodyMesh mesh =
@@ -327,9 +328,11 @@ void Simulation::advance() {
         ps.vr[i] = m_vrHalf[i] + half * rt.ar[i];
         ps.e[i] = m_eHalf[i] + half * rt.de[i];
         // Density and smoothing length stay within sane bounds: an expanding fragment's
-        // density falls under the stress cut-off long before it nears zero.
-        const double rhoFloor = 0.1 * bodies[static_cast<std::size_t>(ps.body[i])].minDensity;
-        ps.rho[i] = std::max(m_rhoHalf[i] + half * rt.drho[i], rhoFloor);
+        // density falls under the stress cut-off long before it nears zero, and no particle
+        // is compressed beyond its equation of state's range (densityCeiling()).
+        const auto& body = bodies[static_cast<std::size_t>(ps.body[i])];
+        ps.rho[i] = std::clamp(m_rhoHalf[i] + half * rt.drho[i], 0.1 * body.minDensity,
+                               body.maxDensity);
         ps.h[i] = m_hHalf[i] + half * rt.dh[i];
         if (strength) {
             ps.szz[i] = m_szzHalf[i] + half * rt.dszz[i];
