@@ -14,8 +14,10 @@ namespace hvi::contact {
 namespace {
 
 constexpr int kMaxContactsPerSlave = 4;
-/// Share of an overlap removed per step.
+/// Share of a small overlap removed per step, and the largest overlap (fraction of the
+/// slave body's spacing) treated so.
 constexpr double kOverlapRecovery = 0.2;
+constexpr double kRecoverableOverlap = 0.02;
 /// A slave closer than this fraction of its body's spacing touches its master.
 constexpr double kTouchTolerance = 0.01;
 
@@ -395,10 +397,13 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
                 nowInContact[k] = 1;
             }
             // The approach the step may still make: it closes the gap and no more. A slave
-            // already inside (the serial resolution lets a later impulse on the same master
+            // slightly inside (the serial resolution lets a later impulse on the same master
             // close a gap a little more) is moved out a fifth of the overlap per step, so
-            // overlaps cannot build up over many steps.
-            const double allowed = (gap >= 0.0 ? gap : kOverlapRecovery * gap) / dt;
+            // overlaps cannot build up over many steps. A deep overlap (a surface just exposed
+            // by erosion) is only kept from growing: pushing it out would throw the slave.
+            const double size = m_bodies[static_cast<std::size_t>(sl.body)].size;
+            const double recovered = gap > -kRecoverableOverlap * size ? kOverlapRecovery * gap : 0.0;
+            const double allowed = (gap >= 0.0 ? gap : recovered) / dt;
             if (-vn <= allowed) {
                 continue;
             }

@@ -16,9 +16,10 @@
 // approaching it with normal speed -v_n larger than the gap it may still close, (g - R)/dt
 // (0 once touching), gets the normal impulse that brings the approach down to that,
 //     J = (-v_n - max(g - R, 0)/dt) / (1/m_s + (1-xi)^2/m_A + xi^2/m_B),
-// applied as +J n to the slave and -J (1-xi) n, -J xi n to A and B (a slave already inside,
-// g < R, which serial resolution can leave when a later impulse moves the same master, is
-// made to separate at 0.2 (R - g)/dt, so overlaps never build up). So the drift never makes
+// applied as +J n to the slave and -J (1-xi) n, -J xi n to A and B (a slave slightly inside,
+// R - g below 2 % of its spacing, which serial resolution can leave when a later impulse
+// moves the same master, is made to separate at 0.2 (R - g)/dt, so overlaps never build up;
+// a deeper one, left by erosion exposing a surface, is only kept from growing). So the drift never makes
 // it penetrate, the pair's momentum is conserved exactly, nothing is ever pushed apart or
 // pulled back (no position corrections, no sticking), and contact cannot create energy.
 // The kinetic energy an impulse takes (a perfectly inelastic normal collision of the contact

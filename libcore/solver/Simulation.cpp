@@ -14,6 +14,7 @@ namespace {
 constexpr double kAxisClearance = 0.1; ///< particles are kept at r >= 0.1 h (Spheral's eta_min)
 constexpr double kMaxDtGrowth = 1.25;
 constexpr int kProgressEvery = 10; ///< steps between penetration checks
+constexpr std::size_t kFeCrossingItems = 3; ///< items behind an FE body's face: penetrated
 } // namespace
 
 Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibrary& library,
@@ -538,25 +539,38 @@ void Simulation::updateProgress() {
             if (!fe) {
                 return z > rear;
             }
+            // A bin with no meshed material left takes its neighbours' face (a one-element
+            // crater in a bulged wall is no hole); only inside a wider hole does the initial
+            // face apply.
             const auto bin = static_cast<std::size_t>((r - rLo) / spacing);
-            const double face = bin < rearOf.size() && std::isfinite(rearOf[bin])
-                                    ? std::max(rearOf[bin], rear)
-                                    : rear;
-            return z > face;
+            double local = bin < rearOf.size() ? rearOf[bin] : rear;
+            if (!std::isfinite(local) && bin < rearOf.size()) {
+                const double before = bin > 0 ? rearOf[bin - 1] : local;
+                const double after = bin + 1 < rearOf.size() ? rearOf[bin + 1] : local;
+                local = std::max(before, after);
+            }
+            return z > (std::isfinite(local) ? std::max(local, rear) : rear);
         };
-        for (std::size_t i = 0; i < ps.size(); ++i) {
-            if (ps.alive[i] && static_cast<std::size_t>(ps.body[i]) != b && behind(ps.z[i], ps.r[i])) {
-                m_penetrated[b] = 1;
-                newPenetration = true;
-                break;
+        // SPH bodies: one item behind the face. FE bodies: as many as hvi-assess asks for
+        // material crossing a rear wall (assess::Criteria::minCrossingItems), so that a lone
+        // free node slipping through a one-element crater on the axis ends no run early.
+        const std::size_t needed = fe ? kFeCrossingItems : 1;
+        std::size_t crossing = 0;
+        for (std::size_t i = 0; i < ps.size() && crossing < needed; ++i) {
+            if (ps.alive[i] && static_cast<std::size_t>(ps.body[i]) != b &&
+                behind(ps.z[i], ps.r[i])) {
+                ++crossing;
             }
         }
-        for (std::size_t k = 0; nodes && !m_penetrated[b] && k < nodes->size(); ++k) {
+        for (std::size_t k = 0; nodes && crossing < needed && k < nodes->size(); ++k) {
             if (nodes->alive[k] && static_cast<std::size_t>(nodes->body[k]) != b &&
                 behind(nodes->z[k], nodes->r[k])) {
-                m_penetrated[b] = 1;
-                newPenetration = true;
+                ++crossing;
             }
+        }
+        if (crossing >= needed) {
+            m_penetrated[b] = 1;
+            newPenetration = true;
         }
     }
     if (newPenetration || front > m_progressFront + m_minSpacing) {
