@@ -49,7 +49,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             double az = 0.0, ar = 0.0, de = 0.0;
             double lzz = 0.0, lzr = 0.0, lrz = 0.0, lrr = 0.0;
             double mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0;
-            double gz = 0.0, gr = 0.0;
+            double gr = 0.0; // radial part of g = (2/rho) sum (w - A) grad W ~ e_r / r
             double maxMu = 0.0;
             // Pass 1: keep the listed candidates inside the support (the list reaches a Verlet
             // skin further). Branch-free, order-preserving compaction.
@@ -116,7 +116,6 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 mrz -= vol * dr * wz;
                 mrr -= vol * dr * wr;
                 if (axi) {
-                    gz += (w - areaMass) * wz;
                     gr += (w - areaMass) * wr;
                 }
             }
@@ -135,7 +134,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             }
             double hoopRate = 0.0;
             if (axi) {
-                const double grz = 2.0 * gz / rhoi, grr = 2.0 * gr / rhoi;
+                const double grr = 2.0 * gr / rhoi;
                 // D_thth = v_r / r, the exact rate of a ring's circumference, except where the
                 // neighbourhood cannot hold a hoop stress (g_r < 1/r: a particle with few
                 // neighbours, e.g. a lone debris particle near the axis): there it follows
@@ -144,14 +143,12 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 hoopRate = vri * std::min(std::max(grr, 0.0), 1.0 / ri);
                 const double sThTh = strength ? -(ps.szz[i] + ps.srr[i]) : 0.0;
                 const double sigmaThTh = sThTh - ps.p[i];
-                // The radial hoop force, and the removal of the spurious axial part of the
-                // radius-weighted pair sum (g_z vanishes on a symmetric neighbourhood but not at
-                // a free surface near the axis); see docs/formulation.md.
-                const double hoopZ = -(sigmaThTh / rhoi) * grz;
+                // The radial hoop force. It has no axial part: an axial force on one particle
+                // would break the pairwise cancellation that conserves z-momentum, and no
+                // antisymmetric pair term can stand in for it (docs/formulation.md).
                 const double hoopR = -(sigmaThTh / rhoi) * grr;
-                az += hoopZ;
                 ar += hoopR;
-                de -= vzi * hoopZ + vri * hoopR;
+                de -= vri * hoopR;
             }
             rates.az[i] += az;
             rates.ar[i] += ar;
