@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <omp.h>
+#include <utility>
 
 namespace hvi::sph {
 
@@ -73,6 +74,9 @@ bool stillValid(const ParticleSet& ps, const NeighbourSearchOptions& options,
     // Common axial translation c: the mid-range of the axial displacements.
     double dzMin = 0.0, dzMax = 0.0;
     bool wokeOutside = false;
+    // min, max and "or" are exact and order-independent: any thread count gives the same.
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems) \
+    reduction(min : dzMin) reduction(max : dzMax) reduction(|| : wokeOutside)
     for (std::size_t i = 0; i < n; ++i) {
         if (!ps.alive[i]) {
             continue;
@@ -87,23 +91,38 @@ bool stillValid(const ParticleSet& ps, const NeighbourSearchOptions& options,
     }
     const double c = 0.5 * (dzMin + dzMax);
     const double halfKappa = 0.5 * options.kernelSupport;
-    // Largest and second largest u over all particles; largest over mirrored ones.
+    // Largest and second largest u over all particles; largest over mirrored ones. Per
+    // thread, then merged: the two largest of a set do not depend on how it was split.
     double u1 = 0.0, u2 = 0.0, uMirror = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!ps.alive[i]) {
-            continue;
+    auto keepTopTwo = [](double u, double& first, double& second) {
+        if (u > first) {
+            second = first;
+            first = u;
+        } else if (u > second) {
+            second = u;
         }
-        const double dz = ps.z[i] - st.z[i] - c, dr = ps.r[i] - st.r[i];
-        const double u = std::sqrt(dz * dz + dr * dr) +
-                         halfKappa * std::max(0.0, ps.h[i] - st.h[i]);
-        if (u > u1) {
-            u2 = u1;
-            u1 = u;
-        } else if (u > u2) {
-            u2 = u;
+    };
+#pragma omp parallel if (n > kParallelMinItems)
+    {
+        double l1 = 0.0, l2 = 0.0, lm = 0.0;
+#pragma omp for schedule(static) nowait
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!ps.alive[i]) {
+                continue;
+            }
+            const double dz = ps.z[i] - st.z[i] - c, dr = ps.r[i] - st.r[i];
+            const double u = std::sqrt(dz * dz + dr * dr) +
+                             halfKappa * std::max(0.0, ps.h[i] - st.h[i]);
+            keepTopTwo(u, l1, l2);
+            if (st.mirrored[i]) {
+                lm = std::max(lm, u);
+            }
         }
-        if (st.mirrored[i]) {
-            uMirror = std::max(uMirror, u);
+#pragma omp critical(hviVerletTopTwo)
+        {
+            keepTopTwo(l1, u1, u2);
+            keepTopTwo(l2, u1, u2);
+            uMirror = std::max(uMirror, lm);
         }
     }
     // A hair under the skin, so rounding in the distances above cannot admit a pair the
@@ -352,7 +371,9 @@ void build(const ParticleSet& ps, const NeighbourSearchOptions& options, Neighbo
     const double kappa = options.kernelSupport;
 #pragma omp parallel if (listedCount > kParallelMinItems)
     {
-        auto& local = threadNeighbours[omp_get_thread_num()];
+        // Filled privately and handed over at the end: pushing into the shared vector of
+        // vectors would make the threads write one cache line (their vectors' headers).
+        std::vector<int32_t> local;
 #pragma omp for schedule(static)
         for (std::size_t a = 0; a < listedCount; ++a) {
             const int32_t i = list.listed[a];
@@ -393,6 +414,7 @@ void build(const ParticleSet& ps, const NeighbourSearchOptions& options, Neighbo
             std::sort(local.begin() + static_cast<std::ptrdiff_t>(before), local.end());
             counts[a] = static_cast<int64_t>(local.size() - before);
         }
+        threadNeighbours[omp_get_thread_num()] = std::move(local);
     }
     list.offset.assign(listedCount + 1, 0);
     for (std::size_t a = 0; a < listedCount; ++a) {

@@ -34,11 +34,19 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
     // Thread-local vote, combined in a fixed order afterwards (min is order-independent,
     // ties broken by the lowest particle index, so the result is thread-count independent).
     std::vector<StepVote> threadVotes(static_cast<std::size_t>(omp_get_max_threads()));
+    int64_t longestRow = 0;
+    for (std::size_t a = 0; a < activeCount; ++a) {
+        const int32_t row = list.row[a];
+        longestRow = std::max(longestRow, list.offset[row + 1] - list.offset[row]);
+    }
 #pragma omp parallel if (activeCount > kParallelMinItems)
     {
         StepVote local;
-        std::vector<int32_t> inside; // this particle's neighbours within the support
-#pragma omp for schedule(static)
+        // This particle's neighbours within the support (sized once: no per-particle fill).
+        std::vector<int32_t> inside(static_cast<std::size_t>(longestRow));
+        // Dynamic chunks balance the threads (a particle's cost varies with its neighbours);
+        // each particle's sums are its own, so who computes it does not change the result.
+#pragma omp for schedule(dynamic, 256)
         for (std::size_t a = 0; a < activeCount; ++a) {
             const int32_t i = list.active[a];
             const PairData& di = pd[i];
@@ -55,7 +63,6 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             // skin further). Branch-free, order-preserving compaction.
             const int32_t row = list.row[a];
             const int64_t k0 = list.offset[row], k1 = list.offset[row + 1];
-            inside.resize(static_cast<std::size_t>(k1 - k0));
             std::size_t count = 0;
             for (int64_t k = k0; k < k1; ++k) {
                 const int32_t j = nb[k];
