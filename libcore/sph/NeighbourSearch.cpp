@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <omp.h>
 #include <utility>
 
@@ -111,8 +112,11 @@ bool stillValid(const ParticleSet& ps, const NeighbourSearchOptions& options,
                 continue;
             }
             const double dz = ps.z[i] - st.z[i] - c, dr = ps.r[i] - st.r[i];
-            const double u = std::sqrt(dz * dz + dr * dr) +
-                             halfKappa * std::max(0.0, ps.h[i] - st.h[i]);
+            double u = std::sqrt(dz * dz + dr * dr) +
+                       halfKappa * std::max(0.0, ps.h[i] - st.h[i]);
+            if (std::isnan(u)) {
+                u = std::numeric_limits<double>::infinity(); // a broken state: rebuild
+            }
             keepTopTwo(u, l1, l2);
             if (st.mirrored[i]) {
                 lm = std::max(lm, u);
