@@ -201,7 +201,7 @@ void Simulation::kickNodes(double dt) {
 }
 
 void Simulation::computeRates() {
-    sph::buildNeighbourList(m_particles, m_searchOptions, m_neighbours);
+    sph::updateNeighbourList(m_particles, m_searchOptions, m_neighbours);
     m_rates.zero();
     m_hydro->evaluate(m_particles, m_neighbours, m_rates);
     m_materials->addStressRates(m_particles, m_neighbours.active, m_rates);

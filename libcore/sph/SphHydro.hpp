@@ -44,6 +44,17 @@ struct HydroOptions {
     double avEta2 = 0.01; ///< eta^2 in mu's denominator: keeps mu finite for close pairs
 };
 
+/// What a particle contributes to its neighbours' sums, packed so a neighbour is two cache
+/// lines (the first holds all the support test needs). B = sigma / rho^2 is formed once per
+/// evaluation instead of once per pair.
+struct alignas(64) PairData {
+    double z, r, h, mass, vz, vr, rho, cs;
+    double bzz, brr, brz;   ///< B = sigma / rho^2, in-plane components [GPa cm^6/g^2]
+    double areaMass;        ///< A = m / (2 pi r) (planar: m) [mg/mm]
+    double volume;          ///< A / rho [mm^2]
+    double pad[3];
+};
+
 class SphHydro {
 public:
     explicit SphHydro(HydroOptions options) : m_options(options) {}
@@ -69,9 +80,7 @@ private:
     HydroOptions m_options;
     double m_stableDt = 0.0;
     int32_t m_limitingParticle = -1;
-    // Per-particle sigma / rho^2, computed once per evaluation (reused by every neighbour).
-    std::vector<double> m_bzz, m_brr, m_brz;
-    std::vector<double> m_areaMass, m_volume; ///< m / (2 pi r) and its area, per particle
+    std::vector<PairData> m_data; ///< per particle, refreshed by every evaluate()
 };
 
 } // namespace hvi::sph

@@ -2,9 +2,9 @@
 //  * the dormant-region skipping changes nothing (a particle it skips has exactly zero rates);
 //  * 1 and 2 threads give identical results (fixed neighbour order, per-particle gathers);
 //  * mass is exact (particles carry fixed masses);
-// and conservation within tolerances: total z-momentum (pair forces are antisymmetric; only
-// the axial artifact removal near the axis, see docs/formulation.md, acts per particle) and
-// total energy (compatible energy equation; leapfrog truncation error only).
+// and conservation within tolerances: total z-momentum (every axial force is a pair force,
+// antisymmetric, mirror pairs included: round-off only) and total energy (compatible energy
+// equation; leapfrog truncation error only).
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "core/Parallel.hpp"
@@ -107,12 +107,11 @@ TEST(Invariants, ConservationWithoutDeletion) {
     // Energy: compatible update, so only the time integration error remains; the issue's bar
     // for an elastic-plastic impact is 1 %.
     EXPECT_LT(o.maxEnergyError, 0.01);
-    // z-momentum, axisymmetric: the pair forces are antisymmetric, but the removal of the
-    // axial artifact of the radius-weighted pair sum near the axis (docs/formulation.md) acts
-    // per particle. Measured 4.5e-3 over this 0.3 us impact: short of issue #4 s 1e-6 (an open
-    // gap, see docs/formulation.md "Known limitations"); asserted at the measured level so a
-    // regression shows.
-    EXPECT_LT(o.momentumDrift, 1e-2);
+    // z-momentum, axisymmetric: every axial force is a pair force (the hoop force is radial),
+    // so only round-off remains (measured 6e-16). Issue #4's bar is 1e-6; a per-particle
+    // axial term of any consequence (the former axial artifact removal drifted 4.5e-3 here)
+    // fails it.
+    EXPECT_LT(o.momentumDrift, 1e-6);
 }
 
 TEST(Invariants, PlanarMomentumIsExact) {
