@@ -514,9 +514,10 @@ void Simulation::updateProgress() {
         const double spacing = m_fills[b].spacing;
         const double rear = body.shape.boundZMax() + 0.5 * spacing;
         const double rLo = body.shape.boundRMin(), rHi = body.shape.boundRMax();
-        // An FE body bulges without breaking: its rear face is where its meshed material is
-        // now, per radial bin of one element (bins it has left, a hole, keep the initial
-        // face). SPH bodies keep the initial face (their own spall counts as debris).
+        // An FE body bulges without breaking: it is penetrated where material of other
+        // bodies lies behind its initial rear face in a radial bin (one element wide) that
+        // holds none of its meshed material any more, a hole. SPH bodies: anything behind the
+        // initial face (their own spall counts as debris).
         std::vector<double> rearOf;
         const bool fe = body.discretization == scene::Discretization::Fe;
         if (fe) {
@@ -539,17 +540,11 @@ void Simulation::updateProgress() {
             if (!fe) {
                 return z > rear;
             }
-            // A bin with no meshed material left takes its neighbours' face (a one-element
-            // crater in a bulged wall is no hole); only inside a wider hole does the initial
-            // face apply.
+            // Only where the body has no meshed material left (a hole) does material behind
+            // the initial face count: where it still has some, the wall holds there, whatever
+            // lone free node got past it.
             const auto bin = static_cast<std::size_t>((r - rLo) / spacing);
-            double local = bin < rearOf.size() ? rearOf[bin] : rear;
-            if (!std::isfinite(local) && bin < rearOf.size()) {
-                const double before = bin > 0 ? rearOf[bin - 1] : local;
-                const double after = bin + 1 < rearOf.size() ? rearOf[bin + 1] : local;
-                local = std::max(before, after);
-            }
-            return z > (std::isfinite(local) ? std::max(local, rear) : rear);
+            return bin < rearOf.size() && !std::isfinite(rearOf[bin]) && z > rear;
         };
         // SPH bodies: one item behind the face. FE bodies: as many as hvi-assess asks for
         // material crossing a rear wall (assess::Criteria::minCrossingItems), so that a lone
