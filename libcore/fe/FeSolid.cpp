@@ -230,9 +230,9 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         }
     };
     energyUpdate(true);
-    materials.updatePressure(el);
+    materials.updatePressure(el, m_evaluated);
     energyUpdate(false);
-    materials.updatePressure(el);
+    materials.updatePressure(el, m_evaluated);
 
     // 5: erosion.
     for (std::size_t k = 0; k < count; ++k) {

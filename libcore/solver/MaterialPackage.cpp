@@ -7,6 +7,7 @@
 #include "material/strength/RadialReturn.hpp"
 #include "sph/ParticleSet.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <variant>
@@ -25,37 +26,67 @@ double densityCeiling(const material::MaterialSpec& spec) {
     return std::numeric_limits<double>::infinity();
 }
 
+namespace {
+
+/// p and cs of points [first, last) of `items` (or of the index range itself when `items` is
+/// null) for one body, with its EOS chosen once.
+template <class Points, class Eos>
+void pressureOf(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdiff_t first,
+                std::ptrdiff_t last, const int32_t* items) {
+    const bool hasS = ps.hasStrength();
+    const double shear = body.strength ? body.spec->shearModulus : 0.0;
+#pragma omp parallel for schedule(static) if (static_cast<std::size_t>(last - first) > kParallelMinItems)
+    for (std::ptrdiff_t k = first; k < last; ++k) {
+        const auto i = items ? static_cast<std::size_t>(items[k]) : static_cast<std::size_t>(k);
+        if (!ps.alive[i]) {
+            continue;
+        }
+        const double rho = std::max(ps.rho[i], body.minDensity);
+        const material::EosState st = eos.evaluate(rho, ps.e[i]);
+        double p = st.pressure;
+        double c2 = st.soundSpeedSquared;
+        const bool failed = hasS && ps.damage[i] >= 1.0;
+        if (ps.rho[i] < body.minDensity) {
+            p = 0.0; // an expanded, fragmented point carries no stress
+        } else if (failed && p < 0.0) {
+            p = 0.0; // failed material takes no tension
+        }
+        if (shear > 0.0 && !failed) {
+            c2 += (4.0 / 3.0) * shear / rho;
+        }
+        ps.p[i] = p;
+        ps.cs[i] = std::sqrt(std::max(c2, 0.0));
+    }
+}
+
+} // namespace
+
 template <class Points>
 void MaterialPackage::updatePressure(Points& ps) const {
-    const bool hasS = ps.hasStrength();
     for (const auto& body : m_bodies) {
-        const double shear = body.strength ? body.spec->shearModulus : 0.0;
         std::visit(
             [&](const auto& eos) {
-                const auto first = static_cast<std::ptrdiff_t>(body.first);
-                const auto last = static_cast<std::ptrdiff_t>(body.first + body.count);
-#pragma omp parallel for schedule(static) if (body.count > kParallelMinItems)
-                for (std::ptrdiff_t k = first; k < last; ++k) {
-                    const auto i = static_cast<std::size_t>(k);
-                    if (!ps.alive[i]) {
-                        continue;
-                    }
-                    const double rho = std::max(ps.rho[i], body.minDensity);
-                    const material::EosState st = eos.evaluate(rho, ps.e[i]);
-                    double p = st.pressure;
-                    double c2 = st.soundSpeedSquared;
-                    const bool failed = hasS && ps.damage[i] >= 1.0;
-                    if (ps.rho[i] < body.minDensity) {
-                        p = 0.0; // an expanded, fragmented particle carries no stress
-                    } else if (failed && p < 0.0) {
-                        p = 0.0; // failed material takes no tension
-                    }
-                    if (shear > 0.0 && !failed) {
-                        c2 += (4.0 / 3.0) * shear / rho;
-                    }
-                    ps.p[i] = p;
-                    ps.cs[i] = std::sqrt(std::max(c2, 0.0));
-                }
+                pressureOf(ps, body, eos, static_cast<std::ptrdiff_t>(body.first),
+                           static_cast<std::ptrdiff_t>(body.first + body.count), nullptr);
+            },
+            body.spec->eos);
+    }
+}
+
+template <class Points>
+void MaterialPackage::updatePressure(Points& ps, const std::vector<int32_t>& items) const {
+    for (const auto& body : m_bodies) {
+        if (body.count == 0) {
+            continue;
+        }
+        // The body's slice of the sorted list.
+        const auto lo = std::lower_bound(items.begin(), items.end(),
+                                         static_cast<int32_t>(body.first));
+        const auto hi = std::lower_bound(lo, items.end(),
+                                         static_cast<int32_t>(body.first + body.count));
+        std::visit(
+            [&](const auto& eos) {
+                pressureOf(ps, body, eos, lo - items.begin(), hi - items.begin(), items.data());
             },
             body.spec->eos);
     }
@@ -146,6 +177,7 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
 // The two kinds of material points.
 template void MaterialPackage::updatePressure(sph::ParticleSet&) const;
 template void MaterialPackage::updatePressure(fe::ElementSet&) const;
+template void MaterialPackage::updatePressure(fe::ElementSet&, const std::vector<int32_t>&) const;
 template void MaterialPackage::addStressRates(const sph::ParticleSet&,
                                               const std::vector<int32_t>&,
                                               sph::ParticleRates&) const;

@@ -50,6 +50,10 @@ public:
     /// fe::ElementRates (explicitly instantiated for those pairs).
     template <class Points>
     void updatePressure(Points& points) const;
+    /// The same for the listed points only (ascending indices), e.g. the elements an FE
+    /// update evaluated: the rest keep their pressure.
+    template <class Points>
+    void updatePressure(Points& points, const std::vector<int32_t>& sortedItems) const;
 
     /// dS/dt (Jaumann rate with the hoop strain rate) for the points listed.
     template <class Points, class Rates>
