@@ -186,6 +186,7 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
         s.extra["eroded_energy_J"] = fe->erodedEnergy();
         s.extra["eroded_elements"] = fe->erodedCount();
         s.extra["contact_dt_us"] = sim.contact()->stableTimeStep();
+        s.extra["contact_heat_J"] = sim.contact()->dissipatedEnergy();
         s.extra["fe_dt_us"] = fe->stableTimeStep();
         s.extra["fe_dt_element"] = fe->limitingElement();
     }
@@ -301,6 +302,7 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
         feDt = dtOf("fe_dt_us");
         feElement = s.extra.at("fe_dt_element").get<int32_t>();
         contactDt = dtOf("contact_dt_us");
+        sim.contact()->restoreDissipatedEnergy(s.extra.at("contact_heat_J"));
     }
     sim.restoreVotes(dtOf("sph_dt_us"), s.extra.at("sph_dt_particle").get<int32_t>(), feDt,
                      feElement, contactDt, std::move(flags));

@@ -77,6 +77,7 @@ public:
     const fe::FeSolid* finiteElements() const { return m_fe.get(); }
     fe::FeSolid* finiteElements() { return m_fe.get(); }
     const contact::KinematicContact* contact() const { return m_contact.get(); }
+    contact::KinematicContact* contact() { return m_contact.get(); }
     /// Wall time spent so far in each package [s] (for the benchmark's throughput figures).
     struct PackageSeconds {
         double sph = 0.0, fe = 0.0, contact = 0.0;

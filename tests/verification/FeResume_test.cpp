@@ -60,4 +60,5 @@ TEST(FeResume, CheckpointedRunEndsBitForBit) {
     EXPECT_EQ(straight.finiteElements()->elements().alive,
               resumed.finiteElements()->elements().alive);
     EXPECT_EQ(straight.energyError(), resumed.energyError());
+    EXPECT_EQ(straight.contact()->dissipatedEnergy(), resumed.contact()->dissipatedEnergy());
 }
