@@ -159,6 +159,7 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
     }
     m_stableDt = std::numeric_limits<double>::infinity();
     m_contactCount = 0;
+    m_touchedParticles.clear();
 
     double maxSize = 0.0;
     for (const auto& b : m_bodies) {
@@ -409,6 +410,12 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
             }
             const double impulse = (-vn - allowed) / invSum;
             const double slaveGain = kick(*sl.vz, *sl.vr, sl.mass, impulse * invS, nz, nr);
+            if (isParticle) {
+                m_touchedParticles.push_back(static_cast<int32_t>(idx));
+            }
+            if (target < 0) {
+                m_touchedParticles.push_back(static_cast<int32_t>(j));
+            }
             double masterGain = 0.0;
             if (target >= 0) {
                 for (const auto& [node, w] : {std::pair{a, wa}, std::pair{b, wb}}) {

@@ -104,6 +104,9 @@ public:
         m_stableDt = stableDt;
         m_inContact = std::move(flags);
     }
+    /// Particles whose half-step state the last resolve() changed (may repeat): the solver
+    /// must advance them even when the SPH evaluation skips them as dormant.
+    const std::vector<int32_t>& touchedParticles() const { return m_touchedParticles; }
     /// Master segments (FE surface edges) in use.
     std::size_t segmentCount() const { return m_segA.size(); }
 
@@ -119,6 +122,7 @@ private:
     std::vector<int32_t> m_nodeElement; ///< an alive element of each node (-1: free node)
     std::vector<uint8_t> m_surfaceNode; ///< node lies on a master segment of its own body
     std::vector<uint8_t> m_inContact;   ///< per particle, then per node: in contact last step
+    std::vector<int32_t> m_touchedParticles;
     std::size_t m_aliveElementsAtBuild = std::numeric_limits<std::size_t>::max();
     double m_stableDt = std::numeric_limits<double>::infinity();
     double m_dissipatedEnergy = 0.0;

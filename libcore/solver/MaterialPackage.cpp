@@ -177,6 +177,7 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
 // The two kinds of material points.
 template void MaterialPackage::updatePressure(sph::ParticleSet&) const;
 template void MaterialPackage::updatePressure(fe::ElementSet&) const;
+template void MaterialPackage::updatePressure(sph::ParticleSet&, const std::vector<int32_t>&) const;
 template void MaterialPackage::updatePressure(fe::ElementSet&, const std::vector<int32_t>&) const;
 template void MaterialPackage::addStressRates(const sph::ParticleSet&,
                                               const std::vector<int32_t>&,

@@ -146,7 +146,9 @@ void Simulation::restoreVotes(double sphDt, int32_t sphParticle, double feDt, in
 
 void Simulation::refreshRates() {
     m_rates.resize(m_particles.size(), m_particles.hasStrength());
+    m_rates.zero();
     m_materials->updatePressure(m_particles);
+    resetHalfStep();
     computeRates();
     if (m_fe) {
         m_fe->computeForces(*m_feMaterials);
@@ -155,9 +157,6 @@ void Simulation::refreshRates() {
         if (!(dt > 0.0)) {
             dt = m_scene.run.cfl * std::min(m_hydro->stableTimeStep(), m_fe->stableTimeStep());
         }
-        m_vzHalf = m_particles.vz;
-        m_vrHalf = m_particles.vr;
-        m_eHalf = m_particles.e;
         m_contact->vote(m_particles, {&m_vzHalf, &m_vrHalf, &m_eHalf}, m_fe->elements(),
                         m_fe->nodes(), dt);
     }
@@ -202,14 +201,50 @@ void Simulation::kickNodes(double dt) {
 
 void Simulation::computeRates() {
     sph::updateNeighbourList(m_particles, m_searchOptions, m_neighbours);
-    m_rates.zero();
-    m_hydro->evaluate(m_particles, m_neighbours, m_rates);
+    // Only particles that have evolved can hold non-zero rates: the evaluation writes the
+    // rates of the active particles, and every active particle joins the evolving set.
+    m_rates.zero(m_evolving);
+    m_hydro->evaluate(m_particles, m_neighbours, m_rates, m_packAll ? nullptr : &m_evolving);
+    m_packAll = false;
     m_materials->addStressRates(m_particles, m_neighbours.active, m_rates);
+    includeEvolving(m_neighbours.active);
+}
+
+void Simulation::resetHalfStep() {
+    const auto& ps = m_particles;
+    m_vzHalf = ps.vz;
+    m_vrHalf = ps.vr;
+    m_eHalf = ps.e;
+    m_rhoHalf = ps.rho;
+    m_hHalf = ps.h;
+    if (ps.hasStrength()) {
+        m_szzHalf = ps.szz;
+        m_srrHalf = ps.srr;
+        m_srzHalf = ps.srz;
+    }
+    m_evolving.clear();
+    m_isEvolving.assign(ps.size(), 0);
+    m_packAll = true; // the particle arrays may have been replaced (a resume)
+}
+
+void Simulation::includeEvolving(const std::vector<int32_t>& items) {
+    const std::size_t before = m_evolving.size();
+    for (const int32_t i : items) {
+        auto& flag = m_isEvolving[static_cast<std::size_t>(i)];
+        if (!flag) {
+            flag = 1;
+            m_evolving.push_back(i);
+        }
+    }
+    if (m_evolving.size() != before) {
+        const auto mid = m_evolving.begin() + static_cast<std::ptrdiff_t>(before);
+        std::sort(mid, m_evolving.end());
+        std::inplace_merge(m_evolving.begin(), mid, m_evolving.end());
+    }
 }
 
 void Simulation::advance() {
     auto& ps = m_particles;
-    const std::size_t n = ps.size();
     const bool strength = ps.hasStrength();
     const bool axi = m_scene.geometry == scene::Geometry::Axisymmetric;
 
@@ -238,20 +273,16 @@ void Simulation::advance() {
     }
     const double half = 0.5 * dt;
 
-    m_vzHalf.resize(n);
-    m_vrHalf.resize(n);
-    m_eHalf.resize(n);
-    m_rhoHalf.resize(n);
-    m_hHalf.resize(n);
-    if (strength) {
-        m_szzHalf.resize(n);
-        m_srrHalf.resize(n);
-        m_srzHalf.resize(n);
-    }
+    // The kick-drift-kick loops run over the evolving particles only (see includeEvolving):
+    // every other particle is at rest in its reference state with zero rates, where a kick
+    // or a drift changes nothing, and its half-step arrays already equal its state.
+    const std::vector<int32_t>& evolving = m_evolving;
     auto& rt = m_rates;
     // Half kick with the rates of the start of the step.
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-    for (std::size_t i = 0; i < n; ++i) {
+    std::size_t count = evolving.size();
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+    for (std::size_t a = 0; a < count; ++a) {
+        const auto i = static_cast<std::size_t>(evolving[a]);
         if (!ps.alive[i]) {
             continue;
         }
@@ -274,13 +305,18 @@ void Simulation::advance() {
         m_contact->resolve(ps, {&m_vzHalf, &m_vrHalf, &m_eHalf}, m_fe->elements(), m_fe->nodes(),
                            dt);
         driftNodes(dt);
+        // A dormant particle set moving by contact evolves from now on (its half-step state
+        // equals its state, so the drift below is all it misses).
+        includeEvolving(m_contact->touchedParticles());
+        count = evolving.size();
         const auto t1 = Clock::now();
         m_packageSeconds.contact += std::chrono::duration<double>(t1 - t0).count();
         t0 = t1;
     }
     // Drift, and predict the end state with the same rates.
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-    for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+    for (std::size_t a = 0; a < count; ++a) {
+        const auto i = static_cast<std::size_t>(evolving[a]);
         if (!ps.alive[i]) {
             continue;
         }
@@ -306,8 +342,9 @@ void Simulation::advance() {
         }
     }
     clampSmoothingLengths();
-    m_materials->updatePressure(ps);
-    computeRates();
+    m_materials->updatePressure(ps, evolving);
+    computeRates(); // the particles it activates join the evolving set
+    count = evolving.size();
     if (m_fe) {
         const auto t1 = Clock::now();
         m_packageSeconds.sph += std::chrono::duration<double>(t1 - t0).count();
@@ -320,8 +357,9 @@ void Simulation::advance() {
 
     // Second half kick with the rates of the predicted end state.
     const auto& bodies = m_materials->bodies();
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-    for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+    for (std::size_t a = 0; a < count; ++a) {
+        const auto i = static_cast<std::size_t>(evolving[a]);
         if (!ps.alive[i]) {
             continue;
         }
@@ -346,7 +384,7 @@ void Simulation::advance() {
     }
     clampSmoothingLengths();
     m_materials->applyPlasticity(ps, rt, m_neighbours.active);
-    m_materials->updatePressure(ps);
+    m_materials->updatePressure(ps, evolving);
 
     m_time += dt;
     m_dt = dt;
@@ -364,7 +402,13 @@ void Simulation::clampSmoothingLengths() {
     auto& ps = m_particles;
     for (const auto& fill : m_fills) {
         const double h0 = m_scene.sph.smoothingLengthFactor * fill.spacing;
-        for (std::size_t i = fill.first; i < fill.first + fill.count; ++i) {
+        // The fill's slice of the (sorted) evolving set: nothing else has moved.
+        const auto lo = std::lower_bound(m_evolving.begin(), m_evolving.end(),
+                                         static_cast<int32_t>(fill.first));
+        const auto hi = std::lower_bound(lo, m_evolving.end(),
+                                         static_cast<int32_t>(fill.first + fill.count));
+        for (auto it = lo; it != hi; ++it) {
+            const auto i = static_cast<std::size_t>(*it);
             ps.h[i] = std::clamp(ps.h[i], 0.25 * h0, 2.0 * h0);
         }
     }
@@ -372,9 +416,11 @@ void Simulation::clampSmoothingLengths() {
 
 void Simulation::deleteParticles() {
     auto& ps = m_particles;
-    const std::size_t n = ps.size();
     const double runaway2 = m_runawaySpeed * m_runawaySpeed;
-    for (std::size_t i = 0; i < n; ++i) {
+    // After the first step only evolving particles can have moved out of bounds.
+    const std::size_t n = m_step <= 1 ? ps.size() : m_evolving.size();
+    for (std::size_t a = 0; a < n; ++a) {
+        const std::size_t i = m_step <= 1 ? a : static_cast<std::size_t>(m_evolving[a]);
         if (!ps.alive[i]) {
             continue;
         }
@@ -619,6 +665,14 @@ void Simulation::restoreClock(double time, long step, double dt, double initialE
     }
     m_rates.resize(m_particles.size(), m_particles.hasStrength());
     m_materials->updatePressure(m_particles);
+    // Which particles evolved before the checkpoint is not stored: all of them evolve from
+    // here (exact, only slower by the dormant ones until the end of the run).
+    resetHalfStep();
+    m_evolving.resize(m_particles.size());
+    for (std::size_t i = 0; i < m_evolving.size(); ++i) {
+        m_evolving[i] = static_cast<int32_t>(i);
+    }
+    m_isEvolving.assign(m_particles.size(), 1);
     computeRates(); // the neighbour lists; the rates themselves come from the checkpoint
     if (m_fe) {
         m_fe->restoreErosion(erodedEnergy, erodedCount);

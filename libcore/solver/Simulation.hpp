@@ -121,6 +121,10 @@ public:
 
 private:
     void computeRates();
+    /// Half-step arrays := state, and no particle evolving (start of a run).
+    void resetHalfStep();
+    /// Adds particles to the evolving set, kept sorted without repeats.
+    void includeEvolving(const std::vector<int32_t>& items);
     void deleteParticles();
     void clampSmoothingLengths();
     void updateProgress();
@@ -159,6 +163,13 @@ private:
     double m_progressFront = -1e300;
     double m_debrisSpeed = 0.0; ///< fastest forward speed of any alive particle [km/s]
     double m_minSpacing = 0.0;
+
+    // The evolving set: every particle that has been evaluated or pushed by contact since
+    // the start (it only grows). The others have never moved, so the time-step loops skip
+    // them exactly.
+    std::vector<int32_t> m_evolving;
+    std::vector<uint8_t> m_isEvolving;
+    bool m_packAll = true; ///< the next SPH evaluation repacks every particle
 
     // Half-step storage for the leapfrog.
     std::vector<double> m_vzHalf, m_vrHalf, m_eHalf, m_rhoHalf, m_hHalf, m_szzHalf, m_srrHalf,

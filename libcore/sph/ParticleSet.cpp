@@ -58,10 +58,30 @@ void ParticleRates::resize(std::size_t n, bool withStrength) {
     }
 }
 
+namespace {
+std::array<std::vector<double>*, 14> rateFields(ParticleRates& rt) {
+    return {&rt.az,    &rt.ar,    &rt.drho,  &rt.de,    &rt.dh,       &rt.dszz,       &rt.dsrr,
+            &rt.dsrz,  &rt.dvzDz, &rt.dvzDr, &rt.dvrDz, &rt.dvrDr,    &rt.hoopRate,   &rt.strainRate};
+}
+} // namespace
+
+void ParticleRates::zero(const std::vector<int32_t>& items) {
+    const auto fields = rateFields(*this);
+    // One array per thread at a time, as zero(): each thread streams through its own field.
+#pragma omp parallel for schedule(static) if (items.size() > kParallelMinItems)
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+        auto* field = fields[f]->data();
+        if (fields[f]->empty()) {
+            continue;
+        }
+        for (const int32_t i : items) {
+            field[i] = 0.0;
+        }
+    }
+}
+
 void ParticleRates::zero() {
-    const std::array<std::vector<double>*, 14> fields{&az,     &ar,         &drho,  &de,    &dh,
-                                                      &dszz,   &dsrr,       &dsrz,  &dvzDz, &dvzDr,
-                                                      &dvrDz,  &dvrDr,      &hoopRate, &strainRate};
+    const auto fields = rateFields(*this);
     // Every step, over every particle: worth both cores (one array per thread at a time).
 #pragma omp parallel for schedule(static) if (az.size() > kParallelMinItems)
     for (std::size_t f = 0; f < fields.size(); ++f) {

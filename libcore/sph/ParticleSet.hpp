@@ -61,6 +61,8 @@ struct ParticleRates {
 
     void resize(std::size_t n, bool withStrength);
     void zero();
+    /// Zeroes the rates of the listed particles only (the others are known to be zero).
+    void zero(const std::vector<int32_t>& items);
 };
 
 } // namespace hvi::sph

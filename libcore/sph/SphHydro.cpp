@@ -198,17 +198,22 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
 
 } // namespace
 
-void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list,
-                        ParticleRates& rates) {
+void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, ParticleRates& rates,
+                        const std::vector<int32_t>* changed) {
     const std::size_t n = ps.size();
-    m_data.resize(n);
+    if (m_data.size() != n) {
+        m_data.resize(n);
+        changed = nullptr; // nothing packed yet
+    }
     const bool axi = m_options.axisymmetric;
     const double inv2Pi = 1.0 / (2.0 * units::kPi);
     const bool strength = ps.hasStrength();
     // Everything a neighbour contributes, packed per particle: a neighbour costs two cache
-    // lines instead of a line from each of thirteen arrays.
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems)
-    for (std::size_t i = 0; i < n; ++i) {
+    // lines instead of a line from each of thirteen arrays. Only what changed is repacked.
+    const std::size_t count = changed ? changed->size() : n;
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::size_t i = changed ? static_cast<std::size_t>((*changed)[k]) : k;
         PairData& d = m_data[i];
         const double inv = 1.0 / (ps.rho[i] * ps.rho[i]);
         const double szz = strength ? ps.szz[i] : 0.0;
