@@ -429,32 +429,44 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
             nowInContact[k] = 1;
             ++m_contactCount;
             // Energy. A new contact is a collision: the kinetic energy it takes becomes heat,
-            // half on each side, so total energy is conserved. So is every contact with a
-            // particle: the compatible SPH energy equation has already paid, from internal
-            // energy, for the velocity the constraint removes. A lasting contact between FE
-            // nodes and segments only cancels the kick of the forces pressing the pair
-            // together, which the elements never paid for (their work follows the net motion,
-            // computed after this constraint): no heat.
+            // so total energy is conserved. So is every contact with a particle: the
+            // compatible SPH energy equation has already paid, from internal energy, for the
+            // velocity the constraint removes. A lasting contact between FE nodes and
+            // segments only cancels the kick of the forces pressing the pair together, which
+            // the elements never paid for (their work follows the net motion, computed after
+            // this constraint): no heat.
+            // The heat is shared in proportion to the masses that take it (the slave
+            // particle, the element of a slave node, a free node itself; the master
+            // segment's element, or the master particle), so both sides rise by the same
+            // specific energy, as the two sides of a symmetric impact of like materials do
+            // (u_p^2 / 2 each). A free node is eroded material: its share joins the eroded
+            // energy ledger (freeNodeHeat()), as its internal energy did when it eroded.
             if (!wasInContact || isParticle || target < 0) {
                 const double heat = -(slaveGain + masterGain);
                 m_dissipatedEnergy += heat;
-                const double masterShare = 0.5 * heat;
-                double slaveShare = 0.5 * heat;
+                const bool slaveIsFree = !isParticle && !(nd.elementCount[idx] > 0 &&
+                                                          m_nodeElement[idx] >= 0);
+                const double slaveHeatMass =
+                    isParticle    ? ps.mass[idx]
+                    : slaveIsFree ? nd.mass[idx]
+                                  : el.mass[static_cast<std::size_t>(m_nodeElement[idx])];
+                const double masterHeatMass =
+                    target < 0             ? ps.mass[j]
+                    : masterElement >= 0 ? el.mass[static_cast<std::size_t>(masterElement)]
+                                         : 0.0;
+                const double slaveShare = heat * slaveHeatMass / (slaveHeatMass + masterHeatMass);
+                const double masterShare = heat - slaveShare;
                 if (target < 0) {
                     heatParticle(j, masterShare);
                 } else if (masterElement >= 0) {
                     heatElement(masterElement, masterShare);
-                } else {
-                    slaveShare = heat;
                 }
                 if (isParticle) {
                     heatParticle(idx, slaveShare);
-                } else if (nd.elementCount[idx] > 0 && m_nodeElement[idx] >= 0) {
+                } else if (!slaveIsFree) {
                     heatElement(m_nodeElement[idx], slaveShare);
-                } else if (target >= 0 && masterElement >= 0) {
-                    heatElement(masterElement, slaveShare); // a free node: all to the master
-                } else if (target < 0) {
-                    heatParticle(j, slaveShare);
+                } else {
+                    m_freeNodeHeat += slaveShare;
                 }
                 continue;
             }

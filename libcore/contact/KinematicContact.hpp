@@ -95,6 +95,10 @@ public:
     /// Kinetic energy turned into heat at contacts since the start [J].
     double dissipatedEnergy() const { return m_dissipatedEnergy; }
     void restoreDissipatedEnergy(double energy) { m_dissipatedEnergy = energy; }
+    /// The part of it that went into free nodes (eroded material, which carries no internal
+    /// energy of its own): booked with the eroded energy [J].
+    double freeNodeHeat() const { return m_freeNodeHeat; }
+    void restoreFreeNodeHeat(double energy) { m_freeNodeHeat = energy; }
     /// Contacts resolved in the last resolve().
     std::size_t contactCount() const { return m_contactCount; }
     /// Which slaves touched in the last step (particles, then nodes) and the last vote: the
@@ -126,6 +130,7 @@ private:
     std::size_t m_aliveElementsAtBuild = std::numeric_limits<std::size_t>::max();
     double m_stableDt = std::numeric_limits<double>::infinity();
     double m_dissipatedEnergy = 0.0;
+    double m_freeNodeHeat = 0.0;
     std::size_t m_contactCount = 0;
 };
 

@@ -238,7 +238,9 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
     for (std::size_t k = 0; k < count; ++k) {
         const auto i = static_cast<std::size_t>(m_evaluated[k]);
         const auto b = static_cast<std::size_t>(el.body[i]);
-        const bool failed = strength && el.damage[i] >= 1.0;
+        // Failed completely: no deviator, no tension, and expanded below the stress cut-off.
+        const bool failed = strength && el.damage[i] >= 1.0 &&
+                            el.rho[i] < materials.bodies()[b].minDensity;
         if (m_erode[i] || failed || el.geometricStrain[i] > m_erosionFactor[b]) {
             erode(i);
         }

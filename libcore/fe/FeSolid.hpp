@@ -24,8 +24,14 @@
 //   Q = C_Q l |tr D| + C_L c for compression (else 0), l_e = A / longest diagonal.
 // Erosion (ANSYS Autodyn's geometric-strain erosion, the source study's calibrated rule): an
 // element is removed when its accumulated effective strain integral(sqrt(2/3 D':D') dt)
-// exceeds the body's erosion factor, when its Johnson-Cook damage reaches 1, or when it
-// inverts (A <= 0). Its mass stays on its nodes; its internal energy leaves the calculation
+// exceeds the body's erosion factor, when it has failed completely, or when it inverts
+// (A <= 0). Failed completely: Johnson-Cook damage 1 *and* expanded below the stress
+// cut-off density, so that it carries no stress at all. A failed element (no deviator, no
+// tension) that is still compact carries pressure and stays, as failed SPH particles do: with
+// the thesis constants the failure strain falls to its 0.01 floor at high triaxiality, so
+// erosion at D = 1 alone deleted every element a small fragment's stress pulse put into
+// triaxial tension (the axis elements of a thin rear wall hit by 3e-4 mg free nodes), which
+// made the geometric-strain factor, the rule the study calibrated, nearly irrelevant. Its mass stays on its nodes; its internal energy leaves the calculation
 // and is booked in the ledger (erodedEnergy). A node left with no alive element is a free
 // mass point: it keeps its momentum and still takes part in contact.
 // Dormant elements (all nodes at rest, no pressure, no deviator) have exactly zero rates and

@@ -170,10 +170,12 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
     const Totals t = sim.totals();
     s.extra = {{"dt_us", sim.lastDt()},
                {"initial_energy_J", sim.initialEnergy()},
-               // Without the eroded elements' share, which is restored with the FE state.
-               {"deleted_energy_J", t.deletedEnergy - (sim.finiteElements()
-                                                           ? sim.finiteElements()->erodedEnergy()
-                                                           : 0.0)},
+               // Without the eroded elements' and the free nodes' shares, which are restored
+               // with the FE and contact state.
+               {"deleted_energy_J",
+                t.deletedEnergy - (sim.finiteElements() ? sim.finiteElements()->erodedEnergy() +
+                                                              sim.contact()->freeNodeHeat()
+                                                        : 0.0)},
                {"deleted_mass_mg", t.deletedMass},
                {"deleted_momentum_z", t.deletedMomentumZ},
                {"runaway_deleted", sim.runawayDeleted()},
@@ -187,6 +189,7 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
         s.extra["eroded_elements"] = fe->erodedCount();
         s.extra["contact_dt_us"] = sim.contact()->stableTimeStep();
         s.extra["contact_heat_J"] = sim.contact()->dissipatedEnergy();
+        s.extra["free_node_heat_J"] = sim.contact()->freeNodeHeat();
         s.extra["fe_dt_us"] = fe->stableTimeStep();
         s.extra["fe_dt_element"] = fe->limitingElement();
     }
@@ -303,6 +306,7 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
         feElement = s.extra.at("fe_dt_element").get<int32_t>();
         contactDt = dtOf("contact_dt_us");
         sim.contact()->restoreDissipatedEnergy(s.extra.at("contact_heat_J"));
+        sim.contact()->restoreFreeNodeHeat(s.extra.value("free_node_heat_J", 0.0));
     }
     sim.restoreVotes(dtOf("sph_dt_us"), s.extra.at("sph_dt_particle").get<int32_t>(), feDt,
                      feElement, contactDt, std::move(flags));

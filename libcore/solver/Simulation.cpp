@@ -396,12 +396,22 @@ void Simulation::advance() {
 }
 
 void Simulation::clampSmoothingLengths() {
-    // Between a quarter and twice the initial value: the lower bound keeps h (and with it the
-    // time step) from collapsing where particles pile up, the upper bound keeps the cells of
-    // the neighbour search from growing with an expanding debris cloud.
+    // At most twice the initial value, which keeps the cells of the neighbour search from
+    // growing with an expanding debris cloud; at least the smoothing length of the densest
+    // state the equation of state allows (h ~ rho^-1/2 in the (z, r) plane: h0 sqrt(rho0 /
+    // rho_max), 0.67 h0 for Al), and never under a quarter of h0. Without the first lower
+    // bound, particles squeezed against an FE surface shrank h to the quarter while their
+    // density stopped at the ceiling, and set a time step ten times below the others'.
     auto& ps = m_particles;
-    for (const auto& fill : m_fills) {
-        const double h0 = m_scene.sph.smoothingLengthFactor * fill.spacing;
+    const auto& bodies = m_materials->bodies();
+    for (std::size_t b = 0; b < m_fills.size(); ++b) {
+        const auto& fill = m_fills[b];
+        if (fill.count == 0) {
+            continue;
+        }
+        const double hRef = m_scene.sph.smoothingLengthFactor * fill.spacing;
+        const double densest = std::sqrt(m_specs[b].referenceDensity / bodies[b].maxDensity);
+        const double hLow = std::max(0.25, densest) * hRef, hHigh = 2.0 * hRef;
         // The fill's slice of the (sorted) evolving set: nothing else has moved.
         const auto lo = std::lower_bound(m_evolving.begin(), m_evolving.end(),
                                          static_cast<int32_t>(fill.first));
@@ -409,7 +419,7 @@ void Simulation::clampSmoothingLengths() {
                                          static_cast<int32_t>(fill.first + fill.count));
         for (auto it = lo; it != hi; ++it) {
             const auto i = static_cast<std::size_t>(*it);
-            ps.h[i] = std::clamp(ps.h[i], 0.25 * h0, 2.0 * h0);
+            ps.h[i] = std::clamp(ps.h[i], hLow, hHigh);
         }
     }
 }
@@ -509,7 +519,7 @@ Totals Simulation::totals() const {
                 t.internal += el.mass[i] * el.e[i];
             }
         }
-        t.deletedEnergy += m_fe->erodedEnergy();
+        t.deletedEnergy += m_fe->erodedEnergy() + m_contact->freeNodeHeat();
         t.erodedElements = m_fe->erodedCount();
     }
     t.deletedMass = m_deletedMass;
@@ -527,8 +537,13 @@ double Simulation::energyError() const {
 void Simulation::updateProgress() {
     const auto& ps = m_particles;
     const double moving = m_scene.run.stopDebrisSpeed;
-    double front = -std::numeric_limits<double>::infinity();
     double fastest = 0.0;
+    // Progress of the material moving forward (faster than the stop speed): its foremost
+    // item, and its centre of mass. Either advancing by a spacing counts, so neither a lone
+    // slow item stalled ahead of the cloud (against a layer) nor a few fast stray items hide
+    // a debris cloud that is still crossing a gap.
+    double front = -std::numeric_limits<double>::infinity();
+    double movingMass = 0.0, movingMoment = 0.0;
     for (std::size_t i = 0; i < ps.size(); ++i) {
         if (!ps.alive[i]) {
             continue;
@@ -536,6 +551,8 @@ void Simulation::updateProgress() {
         fastest = std::max(fastest, ps.vz[i]);
         if (ps.vz[i] > moving) {
             front = std::max(front, ps.z[i]);
+            movingMass += ps.mass[i];
+            movingMoment += ps.mass[i] * ps.z[i];
         }
     }
     const fe::NodeSet* nodes = m_fe ? &m_fe->nodes() : nullptr;
@@ -547,10 +564,14 @@ void Simulation::updateProgress() {
             fastest = std::max(fastest, nodes->vz[k]);
             if (nodes->vz[k] > moving) {
                 front = std::max(front, nodes->z[k]);
+                movingMass += nodes->mass[k];
+                movingMoment += nodes->mass[k] * nodes->z[k];
             }
         }
     }
     m_debrisSpeed = fastest;
+    const double centre = movingMass > 0.0 ? movingMoment / movingMass
+                                           : -std::numeric_limits<double>::infinity();
     bool newPenetration = false;
     for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
         const auto& body = m_scene.bodies[b];
@@ -614,9 +635,11 @@ void Simulation::updateProgress() {
             newPenetration = true;
         }
     }
-    if (newPenetration || front > m_progressFront + m_minSpacing) {
+    if (newPenetration || front > m_progressFront + m_minSpacing ||
+        centre > m_progressCentre + m_minSpacing) {
         m_lastProgressTime = m_time;
         m_progressFront = std::max(front, m_progressFront);
+        m_progressCentre = std::max(centre, m_progressCentre);
     }
 }
 

@@ -161,6 +161,7 @@ private:
     std::vector<uint8_t> m_penetrated;
     double m_lastProgressTime = 0.0;
     double m_progressFront = -1e300;
+    double m_progressCentre = -1e300; ///< furthest centre of mass of the moving material
     double m_debrisSpeed = 0.0; ///< fastest forward speed of any alive particle [km/s]
     double m_minSpacing = 0.0;
 

@@ -174,9 +174,24 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             const double ezr = 0.5 * (lzr + lrz);
             rates.strainRate[i] =
                 std::sqrt((2.0 / 3.0) * (ezz * ezz + err * err + ett * ett + 2.0 * ezr * ezr));
-            // Time-step vote.
-            const double signal = ci + 1.2 * (alpha * ci + beta * maxMu);
-            double dtI = signal > 0.0 ? hi / signal : std::numeric_limits<double>::infinity();
+            // Time-step vote. The Courant condition bounds how far a signal crosses between
+            // neighbours in a step, so a particle with no neighbour inside its support (a lone
+            // debris particle, whose sound speed may be that of a strongly shocked state)
+            // sets none: it only must not cross its own support in a step, which could carry
+            // it past a particle it has not met yet (dt <= h / |v|; FE surfaces have their
+            // own vote in contact).
+            double dtI = std::numeric_limits<double>::infinity();
+            if (count > 0) {
+                const double signal = ci + 1.2 * (alpha * ci + beta * maxMu);
+                if (signal > 0.0) {
+                    dtI = hi / signal;
+                }
+            } else {
+                const double speed = std::sqrt(vzi * vzi + vri * vri);
+                if (speed > 0.0) {
+                    dtI = hi / speed;
+                }
+            }
             const double acc = std::sqrt(az * az + ar * ar);
             if (acc > 0.0) {
                 dtI = std::min(dtI, std::sqrt(hi / acc));
