@@ -233,6 +233,19 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
     if (a.rearWallPerforated && !*a.rearWallPerforated && !a.complete) {
         a.warnings.push_back("NP is provisional: the run did not finish");
     }
+    // A run cut by its end time while the debris is still moving has not seen the end of
+    // the impact: the study's stop rule ends a run once the leading debris is slower than
+    // 0.1 km/s (source study, section 5.4).
+    constexpr double kSpentDebrisKmS = 0.1;
+    if (a.rearWallPerforated && !*a.rearWallPerforated && a.complete && a.hasRunFacts &&
+        stringFact(a.runFacts, "stop_reason", "") == "end_time" && a.last().debris.items > 0 &&
+        a.last().debris.leadingEdgeSpeedKmS > kSpentDebrisKmS) {
+        a.warnings.push_back(
+            "NP is provisional: the run reached its end time with the debris front still "
+            "moving at " +
+            fmt("%.3g", a.last().debris.leadingEdgeSpeedKmS) + " km/s (the study stops at " +
+            fmt("%.3g", kSpentDebrisKmS) + " km/s); rerun with a later --end-time-us");
+    }
     if (a.last().hole && a.last().hole->reachesEdge) {
         a.warnings.push_back("the bumper hole reaches the edge of the bumper as simulated: "
                              "the hole diameter is a lower bound");

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <sstream>
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
 
@@ -91,7 +92,11 @@ TEST(HviAssessCli, VerdictGoesToStdoutByDefault) {
     const auto r = runTool("hvi-assess", run.string() + " -q");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(json::parse(r.out)["verdict"], "NP");
-    EXPECT_TRUE(r.err.empty()) << r.err;
+    // -q keeps warnings only (this run ends with its debris in flight: a provisional NP).
+    std::istringstream lines(r.err);
+    for (std::string line; std::getline(lines, line);) {
+        EXPECT_EQ(line.rfind("hvi-assess: warning: ", 0), 0u) << line;
+    }
 }
 
 TEST(HviAssessCli, ExpectMatchExitsZero) {

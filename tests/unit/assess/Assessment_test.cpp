@@ -4,6 +4,7 @@
 #include "assess/Verdict.hpp"
 #include "io/JsonInput.hpp"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -137,4 +138,25 @@ TEST(Assessment, ChangedParticleCountFallsBackToTheSceneGeometry) {
     EXPECT_FALSE(a.referencePositions);
     ASSERT_TRUE(a.last().hole);
     EXPECT_NEAR(a.last().hole->diameterMm, 3.0, 0.1);
+}
+
+TEST(Assessment, NpAtTheEndTimeWithMovingDebrisIsProvisional) {
+    // The rear wall is intact at the last snapshot, but the run stopped on its end time with
+    // the debris still flying at 2 km/s: the NP is flagged as provisional. With the debris
+    // at rest it is not.
+    for (const double speed : {2.0, 0.0}) {
+        SyntheticRun run(test::whippleScene());
+        auto& snap = run.addSnapshot(1.0);
+        run.forBody(snap, "projectile", [&](std::size_t i) {
+            snap.z[i] = 2.0;
+            snap.vz[i] = speed;
+        });
+        const auto a = test::assessSynthetic(run, "np_end_time");
+        ASSERT_TRUE(a.rearWallPerforated.has_value());
+        EXPECT_FALSE(*a.rearWallPerforated);
+        const bool flagged = std::any_of(a.warnings.begin(), a.warnings.end(), [](const auto& w) {
+            return w.find("end time with the debris front still moving") != std::string::npos;
+        });
+        EXPECT_EQ(flagged, speed > 0.1) << "debris at " << speed << " km/s";
+    }
 }
