@@ -269,6 +269,22 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
         h.valid = h.xi >= 0.0 && h.xi <= 1.0;
         return h;
     };
+    // Geometry of a free-node slave against particle j: the line of centres (n from the
+    // particle to the slave) and the gap beyond both radii; invalid for coincident points.
+    auto particleHit = [&](const Slave& sl, std::size_t j) {
+        SegmentHit h;
+        const double reach = sl.radius + 0.5 * m_bodies[static_cast<std::size_t>(ps.body[j])].size;
+        const double dz = *sl.z - ps.z[j], dr = *sl.r - ps.r[j];
+        const double dist = std::sqrt(dz * dz + dr * dr);
+        if (!(dist > 0.0)) {
+            return h;
+        }
+        h.nz = dz / dist;
+        h.nr = dr / dist;
+        h.gap = dist - reach;
+        h.valid = true;
+        return h;
+    };
 
     // 1: candidates and time-step votes, in parallel.
 #pragma omp parallel for schedule(dynamic, 256) if (slaveCount > kParallelMinItems)
@@ -303,18 +319,15 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
         if (sl.free && !nearParticles.empty()) {
             particleGrid.forNear(*sl.z, *sl.r, [&](int32_t kp) {
                 const auto j = static_cast<std::size_t>(nearParticles[static_cast<std::size_t>(kp)]);
-                const double reach =
-                    sl.radius + 0.5 * m_bodies[static_cast<std::size_t>(ps.body[j])].size;
-                const double dz = *sl.z - ps.z[j], dr = *sl.r - ps.r[j];
-                const double dist = std::sqrt(dz * dz + dr * dr);
-                if (!(dist > 0.0)) {
+                const SegmentHit h = particleHit(sl, j);
+                if (!h.valid) {
                     return;
                 }
                 const double approach =
-                    -((*sl.vz - (*half.vz)[j]) * dz + (*sl.vr - (*half.vr)[j]) * dr) / dist;
+                    -((*sl.vz - (*half.vz)[j]) * h.nz + (*sl.vr - (*half.vr)[j]) * h.nr);
                 if (approach > 0.0) {
                     out.dt = std::min(out.dt, 0.5 * cellSize / approach);
-                    if (dist - reach < approach * dt && out.count < kMaxContactsPerSlave) {
+                    if (h.gap < approach * dt && out.count < kMaxContactsPerSlave) {
                         out.target[static_cast<std::size_t>(out.count++)] =
                             -1 - static_cast<int32_t>(j);
                     }
@@ -379,16 +392,13 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
                 masterElement = m_segElement[s];
             } else {
                 j = static_cast<std::size_t>(-1 - target);
-                const double reach =
-                    sl.radius + 0.5 * m_bodies[static_cast<std::size_t>(ps.body[j])].size;
-                const double dz = *sl.z - ps.z[j], dr = *sl.r - ps.r[j];
-                const double dist = std::sqrt(dz * dz + dr * dr);
-                if (!(dist > 0.0)) {
+                const SegmentHit h = particleHit(sl, j);
+                if (!h.valid) {
                     continue;
                 }
-                nz = dz / dist;
-                nr = dr / dist;
-                gap = dist - reach;
+                nz = h.nz;
+                nr = h.nr;
+                gap = h.gap;
                 vn = (*sl.vz - (*half.vz)[j]) * nz + (*sl.vr - (*half.vr)[j]) * nr;
                 invSum += 1.0 / ps.mass[j];
             }

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace hvi::solver {
 
@@ -692,9 +693,7 @@ void Simulation::restoreClock(double time, long step, double dt, double initialE
     // here (exact, only slower by the dormant ones until the end of the run).
     resetHalfStep();
     m_evolving.resize(m_particles.size());
-    for (std::size_t i = 0; i < m_evolving.size(); ++i) {
-        m_evolving[i] = static_cast<int32_t>(i);
-    }
+    std::iota(m_evolving.begin(), m_evolving.end(), 0);
     m_isEvolving.assign(m_particles.size(), 1);
     computeRates(); // the neighbour lists; the rates themselves come from the checkpoint
     if (m_fe) {
