@@ -191,8 +191,11 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
                                        m.debris.leadingEdgeDepthMm);
         }
         if (&info == &a.snapshots.back()) {
-            a.particles = snap.particles.z.size();
-            for (std::size_t i = 0; i < a.particles; ++i) {
+            for (std::size_t i = 0; i < snap.particles.z.size(); ++i) {
+                if (isUnusedSlot(snap.particles, i)) {
+                    continue;
+                }
+                ++a.particles;
                 if (snap.particles.alive[i]) {
                     ++a.aliveParticles;
                 } else {

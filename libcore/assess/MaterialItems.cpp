@@ -23,29 +23,34 @@ void elementCentroids(const io::FeFields& fe, std::vector<double>& z, std::vecto
 
 } // namespace
 
+bool isUnusedSlot(const io::ParticleFields& particles, std::size_t i) {
+    return !particles.alive[i] && particles.mass[i] == 0.0;
+}
+
 MaterialItems materialItems(const io::Snapshot& snapshot, const io::Snapshot& first) {
     MaterialItems items;
     items.timeUs = snapshot.info.timeUs;
     const auto& p = snapshot.particles;
     const std::size_t np = p.z.size();
-    items.particleCount = np;
-    items.z = p.z;
-    items.r = p.r;
-    items.vz = p.vz;
-    items.vr = p.vr;
-    items.mass = p.mass;
-    items.density = p.density;
-    items.damage = p.damage.empty() ? std::vector<double>(np, 0.0) : p.damage;
-    items.body = p.bodyId;
-    items.alive = p.alive;
     const bool particlesMatch = first.particles.z.size() == np;
-    if (particlesMatch) {
-        items.z0 = first.particles.z;
-        items.r0 = first.particles.r;
-    } else {
-        items.z0 = p.z;
-        items.r0 = p.r;
+    const auto& reference = particlesMatch ? first.particles : p;
+    for (std::size_t i = 0; i < np; ++i) {
+        if (isUnusedSlot(p, i)) {
+            continue;
+        }
+        items.z.push_back(p.z[i]);
+        items.r.push_back(p.r[i]);
+        items.z0.push_back(reference.z[i]);
+        items.r0.push_back(reference.r[i]);
+        items.vz.push_back(p.vz[i]);
+        items.vr.push_back(p.vr[i]);
+        items.mass.push_back(p.mass[i]);
+        items.density.push_back(p.density[i]);
+        items.damage.push_back(p.damage.empty() ? 0.0 : p.damage[i]);
+        items.body.push_back(p.bodyId[i]);
+        items.alive.push_back(p.alive[i]);
     }
+    items.particleCount = items.z.size();
     bool elementsMatch = true;
 
     if (snapshot.fe) {

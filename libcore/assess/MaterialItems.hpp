@@ -9,7 +9,8 @@
 //
 // Reference positions are the item's position in the run's first snapshot: the solver keeps
 // every particle's slot for the whole run (deleted particles keep their last state with
-// Alive = 0), so item i of any snapshot is item i of the first. When the counts differ
+// Alive = 0), so particle i of any snapshot is particle i of the first. A particle made of
+// an eroded element has, as its reference, the centroid of that element at the start. When the counts differ
 // (a file not written that way), hasReference is false and the metrics fall back to the
 // scene's geometry; the verdict says so.
 //
@@ -42,8 +43,12 @@ struct MaterialItems {
     bool isElement(std::size_t i) const { return i >= particleCount; }
 };
 
+/// A particle slot that holds no material: reserved for an FE element that has not eroded
+/// (Alive 0 and Mass 0; a deleted particle keeps its mass). Such slots are not items.
+bool isUnusedSlot(const io::ParticleFields& particles, std::size_t i);
+
 /// The items of `snapshot`, with reference positions from `first` (the run's first
-/// snapshot; may be the same object).
+/// snapshot; may be the same object). Unused particle slots are left out.
 MaterialItems materialItems(const io::Snapshot& snapshot, const io::Snapshot& first);
 
 } // namespace hvi::assess

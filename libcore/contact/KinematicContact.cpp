@@ -296,7 +296,9 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half,
         SlaveContacts& out = found[k];
         segments.forNear(*sl.z, *sl.r, [&](int32_t s) {
             const auto su = static_cast<std::size_t>(s);
-            if (m_segBody[su] == sl.body) {
+            // A node never meets its own body's surface (its elements hold it); a particle
+            // may: one made of an eroded element stays outside the rest of its body.
+            if (m_segBody[su] == sl.body && k >= np) {
                 return;
             }
             const SegmentHit h = hit(*sl.z, *sl.r, su);

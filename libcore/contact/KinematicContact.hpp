@@ -10,8 +10,9 @@
 // Stryk R.A. (1987), Int. J. Impact Eng. 5:411-421, and of particles against element
 // surfaces, Johnson, Beissel & Stryk (2002), Comput. Methods Appl. Mech. Eng. 191:2451).
 // After the first half kick of a step dt, a slave (particle, surface node or free node) of
-// radius R at signed distance g from a master segment A -> B of another body (outward normal
-// n, projection xi in [0, 1], and -l/2 < g with l the master body's element size, so a slave
+// radius R at signed distance g from a master segment A -> B of another body (a particle
+// made of an eroded element also meets its own body's surfaces) (outward normal n,
+// projection xi in [0, 1], and -l/2 < g with l the master body's element size, so a slave
 // deeper than half an element is never pushed out through the far side of a thin layer),
 // approaching it with normal speed -v_n larger than the gap it may still close, (g - R)/dt
 // (0 once touching), gets the normal impulse that brings the approach down to that,

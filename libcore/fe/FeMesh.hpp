@@ -24,7 +24,8 @@ namespace hvi::fe {
 struct NodeSet {
     std::vector<double> z, r;         ///< position [mm]
     std::vector<double> vz, vr;       ///< velocity [km/s]
-    std::vector<double> mass;         ///< lumped mass [mg] (never changes: erosion keeps it)
+    std::vector<double> mass;         ///< lumped mass [mg] (an eroded element that becomes a
+                                      ///< particle takes its share; 0: the node is gone)
     std::vector<double> fz, fr;       ///< force of the current step [mg mm/us^2 = kN]
     std::vector<int32_t> body;        ///< scene body index
     std::vector<uint8_t> alive;       ///< 0 once deleted (runaway, left the domain)

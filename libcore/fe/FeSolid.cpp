@@ -115,6 +115,7 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
     const bool strength = el.hasStrength();
     const double cq = m_options.bulkQuadratic, cl = m_options.bulkLinear;
     selectEvaluated();
+    m_erodedNow.clear();
     const std::size_t count = m_evaluated.size();
 
     // 1-2: kinematics at mid-step, density from the end-of-step swept volume, bulk viscosity,
@@ -254,7 +255,10 @@ void FeSolid::erode(std::size_t i) {
     auto& el = m_elements;
     el.alive[i] = 0;
     m_erode[i] = 0;
-    m_erodedEnergy += el.mass[i] * el.e[i];
+    if (!m_options.erodedBecomeParticles) {
+        m_erodedEnergy += el.mass[i] * el.e[i];
+    }
+    m_erodedNow.push_back(static_cast<int32_t>(i));
     ++m_erodedCount;
     for (int a = 0; a < 4; ++a) {
         --m_nodes.elementCount[static_cast<std::size_t>(el.node(i, a))];

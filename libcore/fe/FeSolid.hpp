@@ -31,9 +31,12 @@
 // the thesis constants the failure strain falls to its 0.01 floor at high triaxiality, so
 // erosion at D = 1 alone deleted every element a small fragment's stress pulse put into
 // triaxial tension (the axis elements of a thin rear wall hit by 3e-4 mg free nodes), which
-// made the geometric-strain factor, the rule the study calibrated, nearly irrelevant. Its mass stays on its nodes; its internal energy leaves the calculation
-// and is booked in the ledger (erodedEnergy). A node left with no alive element is a free
-// mass point: it keeps its momentum and still takes part in contact.
+// made the geometric-strain factor, the rule the study calibrated, nearly irrelevant.
+// What becomes of an eroded element is the caller's choice (FeOptions::erodedBecomeParticles):
+// either it becomes an SPH particle (solver/ErodedParticles.hpp, which takes its mass off the
+// nodes), or its mass stays on its nodes and its internal energy leaves the calculation,
+// booked in the ledger (erodedEnergy); a node left with no alive element is then a free mass
+// point that keeps its momentum and still takes part in contact.
 // Dormant elements (all nodes at rest, no pressure, no deviator) have exactly zero rates and
 // forces, and are skipped (the same "compute only what the scene needs" rule as SPH).
 //
@@ -55,6 +58,10 @@ struct FeOptions {
     double hourglassCoefficient = 0.1; ///< kappa [-]
     double bulkLinear = 0.06;          ///< C_L [-]
     double bulkQuadratic = 1.5;        ///< C_Q [-]
+    /// Eroded elements are handed to the caller (erodedThisUpdate()) to become SPH
+    /// particles, which take their mass and energy; otherwise their mass stays on the nodes
+    /// and their internal energy goes to the eroded-energy ledger.
+    bool erodedBecomeParticles = false;
 };
 
 class FeSolid {
@@ -83,6 +90,8 @@ public:
     /// Internal energy that eroded elements took out of the calculation [J], and their count.
     double erodedEnergy() const { return m_erodedEnergy; }
     std::size_t erodedCount() const { return m_erodedCount; }
+    /// The elements the last update eroded, in ascending order.
+    const std::vector<int32_t>& erodedThisUpdate() const { return m_erodedNow; }
     std::size_t evaluatedCount() const { return m_evaluated.size(); }
     void restoreErosion(double energy, std::size_t count);
     /// The state of the last update that the next one reads (checkpointed for an exact
@@ -121,6 +130,7 @@ private:
     std::vector<double> m_volume, m_volumeChange; ///< swept volume [mm^3] and its last change
     std::vector<double> m_hourglassWork;          ///< hourglass work of the last update [J]
     std::vector<uint8_t> m_erode;                 ///< inverted this update: erode
+    std::vector<int32_t> m_erodedNow;             ///< eroded by the last update
     double m_referenceDt = std::numeric_limits<double>::infinity(); ///< undisturbed elements
     double m_stableDt = 0.0;
     int32_t m_limitingElement = -1;

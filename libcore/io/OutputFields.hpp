@@ -280,7 +280,9 @@ struct FieldTable<ParticleFieldsOf<S>> {
                   "of the bodies in /scene"),
         bindField(&F::alive, "Alive", 1, "-", kDimensionless, req,
                   "1 while the particle takes part in the calculation, 0 once deleted "
-                  "(runaway speed, density cut-off); a deleted particle keeps its last state"),
+                  "(runaway speed, density cut-off); a deleted particle keeps its last state. "
+                  "0 with Mass 0: a slot held in reserve for an element of an FE body, "
+                  "used when that element erodes (not material)"),
     };
 };
 

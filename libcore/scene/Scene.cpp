@@ -156,6 +156,7 @@ Scene parseScene(const json& document, const std::string& file,
     scene.fe.hourglassCoefficient = fe.at("hourglass_coefficient");
     scene.fe.bulkViscosityLinear = fe.at("bulk_viscosity_linear");
     scene.fe.bulkViscosityQuadratic = fe.at("bulk_viscosity_quadratic");
+    scene.fe.erodedToParticles = fe.at("eroded_material") == "particles";
 
     const json& run = doc.at("run");
     scene.run.endTime = run.at("end_time_us");

@@ -63,6 +63,8 @@ struct FeControls {
     double erosionFactor = 1.5;
     double hourglassCoefficient = 0.1;
     double bulkViscosityLinear = 0.06, bulkViscosityQuadratic = 1.5;
+    /// Eroded elements become SPH particles (true) or leave free nodes (false).
+    bool erodedToParticles = true;
 };
 
 struct RunControls {

@@ -149,6 +149,7 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
         s.doubles["node_vr"] = nd.vr;
         s.doubles["node_fz"] = nd.fz;
         s.doubles["node_fr"] = nd.fr;
+        s.doubles["node_mass"] = nd.mass; // eroded elements turned into particles take theirs
         s.ints["node_alive"] = std::vector<int32_t>(nd.alive.begin(), nd.alive.end());
         s.doubles["element_rho"] = el.rho;
         s.doubles["element_e"] = el.e;
@@ -258,6 +259,7 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
         take("node_vr", nd.vr);
         take("node_fz", nd.fz);
         take("node_fr", nd.fr);
+        take("node_mass", nd.mass);
         takeFlags("node_alive", nd.alive);
         take("element_rho", el.rho);
         take("element_e", el.e);
@@ -438,7 +440,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
                           "t %.4f/%.3f us  dt %.2e us (%s)  particles %zu active/%zu%s  wall %s  "
                           "ETA <= %s  energy error %+.2e",
                           sim.time(), scene.run.endTime, sim.lastDt(), limiter.c_str(),
-                          sim.activeCount(), summary.particles, elements.c_str(),
+                          sim.activeCount(), sim.aliveCount(), elements.c_str(),
                           formatDuration(wall).c_str(), formatDuration(eta).c_str(),
                           sim.energyError());
             log(line);

@@ -29,9 +29,14 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         const bool strength = body.strength && m_specs.back().hasStrength();
         if (body.discretization == scene::Discretization::Fe) {
             anyFeStrength = anyFeStrength || strength;
+            // Its eroded elements become particles that keep their stress state.
+            anyStrength = anyStrength || (strength && m_scene.fe.erodedToParticles);
         } else {
             anyStrength = anyStrength || strength;
         }
+    }
+    if (m_scene.hasFeBodies() && m_scene.fe.erodedToParticles) {
+        m_eroded = std::make_unique<ErodedParticles>(axi, m_scene.sph.smoothingLengthFactor);
     }
     std::vector<BodyMaterial> bodyMaterials, elementMaterials;
     std::vector<contact::ContactBody> contactBodies;
@@ -55,10 +60,18 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         if (body.discretization == scene::Discretization::Fe) {
             const fe::BodyMesh mesh =
                 fe::meshBody(body, static_cast<int32_t>(b), rho0, 0.0, axi, nodes, elements);
-            sph::BodyFill none;
-            none.first = m_particles.size();
-            none.spacing = mesh.elementSize;
-            m_fills.push_back(none);
+            // The particles its eroded elements will become, held in reserve (or none).
+            sph::BodyFill reserve;
+            reserve.first = m_particles.size();
+            reserve.spacing = mesh.elementSize;
+            if (m_eroded) {
+                m_eroded->reserve(mesh, static_cast<int32_t>(b), rho0, nodes, elements,
+                                  m_particles);
+                reserve.count = m_particles.size() - reserve.first;
+            }
+            m_fills.push_back(reserve);
+            bm.first = reserve.first;
+            bm.count = reserve.count;
             em.first = mesh.firstElement;
             em.count = mesh.elementCount;
             // Element density follows the swept volume exactly; the stress cut-off for an
@@ -72,9 +85,7 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
             bm.count = m_fills.back().count;
             contactBodies.push_back({false, m_fills.back().spacing});
         }
-        if (body.discretization == scene::Discretization::Fe) {
-            bm.count = 0;
-        } else {
+        if (body.discretization != scene::Discretization::Fe) {
             em.count = 0;
         }
         bodyMaterials.push_back(bm);
@@ -95,6 +106,7 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         feOptions.hourglassCoefficient = m_scene.fe.hourglassCoefficient;
         feOptions.bulkLinear = m_scene.fe.bulkViscosityLinear;
         feOptions.bulkQuadratic = m_scene.fe.bulkViscosityQuadratic;
+        feOptions.erodedBecomeParticles = m_eroded != nullptr;
         m_fe = std::make_unique<fe::FeSolid>(feOptions, std::move(nodes), std::move(elements),
                                              std::move(erosionFactors));
         contact::ContactOptions contactOptions;
@@ -129,7 +141,8 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     m_penetrated.assign(m_scene.bodies.size(), 0);
 
     m_rates.resize(m_particles.size(), m_particles.hasStrength());
-    m_aliveCount = m_particles.size();
+    m_aliveCount = static_cast<std::size_t>(
+        std::count(m_particles.alive.begin(), m_particles.alive.end(), uint8_t{1}));
     refreshRates();
     const Totals t = totals();
     m_initialEnergy = t.kinetic + t.internal;
@@ -382,6 +395,9 @@ void Simulation::advance() {
     }
     if (m_fe) {
         kickNodes(dt);
+        if (m_eroded) {
+            convertErodedElements();
+        }
     }
     clampSmoothingLengths();
     m_materials->applyPlasticity(ps, rt, m_neighbours.active);
@@ -394,6 +410,39 @@ void Simulation::advance() {
     if (m_step % kProgressEvery == 0) {
         updateProgress();
     }
+}
+
+void Simulation::convertErodedElements() {
+    const auto& eroded = m_fe->erodedThisUpdate();
+    if (eroded.empty()) {
+        return;
+    }
+    const auto& bodies = m_materials->bodies();
+    std::vector<double> rhoMin, rhoMax;
+    for (const auto& body : bodies) {
+        rhoMin.push_back(0.1 * body.minDensity); // the particles' own clamp (advance())
+        rhoMax.push_back(body.maxDensity);
+    }
+    auto& ps = m_particles;
+    const std::vector<int32_t> created =
+        m_eroded->convert(eroded, m_fe->elements(), m_fe->nodes(), ps, rhoMin, rhoMax);
+    // A new particle starts the next step from its state (its rates are zero until the next
+    // evaluation), so its half-step arrays are its state, as for any particle at rest.
+    for (const int32_t k : created) {
+        const auto i = static_cast<std::size_t>(k);
+        m_vzHalf[i] = ps.vz[i];
+        m_vrHalf[i] = ps.vr[i];
+        m_eHalf[i] = ps.e[i];
+        m_rhoHalf[i] = ps.rho[i];
+        m_hHalf[i] = ps.h[i];
+        if (ps.hasStrength()) {
+            m_szzHalf[i] = ps.szz[i];
+            m_srrHalf[i] = ps.srr[i];
+            m_srzHalf[i] = ps.srz[i];
+        }
+    }
+    m_aliveCount += created.size();
+    includeEvolving(created);
 }
 
 void Simulation::clampSmoothingLengths() {
@@ -493,7 +542,8 @@ Totals Simulation::totals() const {
     Totals t;
     for (std::size_t i = 0; i < ps.size(); ++i) {
         if (!ps.alive[i]) {
-            ++t.deleted;
+            // A slot with no mass is a reserve particle no eroded element has used yet.
+            t.deleted += ps.mass[i] > 0.0 ? 1 : 0;
             continue;
         }
         ++t.alive;

@@ -21,6 +21,7 @@
 #include "fe/FeSolid.hpp"
 #include "material/MaterialLibrary.hpp"
 #include "scene/Scene.hpp"
+#include "solver/ErodedParticles.hpp"
 #include "solver/MaterialPackage.hpp"
 #include "sph/NeighbourSearch.hpp"
 #include "sph/ParticleGenerator.hpp"
@@ -126,6 +127,8 @@ private:
     /// Adds particles to the evolving set, kept sorted without repeats.
     void includeEvolving(const std::vector<int32_t>& items);
     void deleteParticles();
+    /// The elements the FE update eroded become particles (scene fe.eroded_material).
+    void convertErodedElements();
     void clampSmoothingLengths();
     void updateProgress();
     void driftNodes(double dt);
@@ -142,6 +145,7 @@ private:
     std::unique_ptr<MaterialPackage> m_feMaterials; ///< FE bodies' elements (FE scenes only)
     std::unique_ptr<fe::FeSolid> m_fe;
     std::unique_ptr<contact::KinematicContact> m_contact;
+    std::unique_ptr<ErodedParticles> m_eroded; ///< null unless eroded elements become particles
     std::string m_dtLimiter = "sph";
     PackageSeconds m_packageSeconds;
     std::vector<sph::BodyFill> m_fills;

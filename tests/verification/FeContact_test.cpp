@@ -100,6 +100,9 @@ DropResult drop(bool feProjectile) {
             // A particle rests at half a spacing from the surface (its radius).
             const auto& ps = s.particles();
             for (std::size_t i = 0; i < ps.size(); ++i) {
+                if (ps.body[i] != 0) {
+                    continue; // the plate's reserve of particles for eroded elements
+                }
                 out.maxSink = std::max(out.maxSink,
                                        ps.z[i] + 0.5 * kSpacing - frontSurface(fe, ps.r[i]));
             }
@@ -118,8 +121,10 @@ DropResult drop(bool feProjectile) {
     } else {
         const auto& ps = sim.particles();
         for (std::size_t i = 0; i < ps.size(); ++i) {
-            m += ps.mass[i];
-            pz += ps.mass[i] * ps.vz[i];
+            if (ps.body[i] == 0) {
+                m += ps.mass[i];
+                pz += ps.mass[i] * ps.vz[i];
+            }
         }
     }
     out.finalProjectileVz = pz / m;

@@ -26,6 +26,9 @@ struct Outcome {
     double maxEnergyError = 0.0;
     double time = 0.0;
     std::string stopReason;
+    double momentumDrift = 0.0;     ///< max |p_z + p_z,deleted - p_z,0| / p_z,0 [-]
+    std::size_t freeNodes = 0;      ///< alive nodes with no alive element at the end
+    std::size_t plateParticles = 0; ///< particles made of eroded plate elements
 };
 
 Outcome strike(double speed, double spacing) {
@@ -49,11 +52,23 @@ Outcome strike(double speed, double spacing) {
     const auto scene = test::makeScene(doc);
     solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
     Outcome out;
+    const double p0 = sim.totals().momentumZ;
     test::runUntil(sim, kEndTime, [&](const solver::Simulation& s) {
         if (s.step() % 10 == 0) {
             out.maxEnergyError = std::max(out.maxEnergyError, std::fabs(s.energyError()));
+            const auto t = s.totals();
+            out.momentumDrift = std::max(
+                out.momentumDrift, std::fabs(t.momentumZ + t.deletedMomentumZ - p0) / p0);
         }
     });
+    const auto& nd = sim.finiteElements()->nodes();
+    for (std::size_t n = 0; n < nd.size(); ++n) {
+        out.freeNodes += nd.alive[n] && nd.elementCount[n] == 0 ? 1 : 0;
+    }
+    const auto& ps = sim.particles();
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+        out.plateParticles += ps.body[i] == 1 && ps.mass[i] > 0.0 ? 1 : 0;
+    }
     out.maxEnergyError = std::max(out.maxEnergyError, std::fabs(sim.energyError()));
     // Perforated: a column of the structured mesh (element iz * nr + ir, z outer) eroded
     // through the whole thickness, i.e. a hole from the front face to the rear face.
@@ -78,11 +93,13 @@ Outcome strike(double speed, double spacing) {
     const auto t = sim.totals();
     std::printf("%.2f km/s, spacing %.3f mm: %s at %.3f us (%s), %zu elements eroded (%.4f mg), "
                 "max |energy error| %.2e (final %+.2e; contact heat %.2e, deleted and eroded "
-                "%.2e of E0)\n",
+                "%.2e of E0); momentum drift %.1e; %zu particles made of eroded elements, "
+                "%zu free nodes\n",
                 speed, spacing, out.perforated ? "perforated" : "not perforated", out.time,
                 out.stopReason.c_str(), out.eroded, out.erodedMassMg, out.maxEnergyError,
                 sim.energyError(), sim.contact()->dissipatedEnergy() / sim.initialEnergy(),
-                t.deletedEnergy / sim.initialEnergy());
+                t.deletedEnergy / sim.initialEnergy(), out.momentumDrift, out.plateParticles,
+                out.freeNodes);
     return out;
 }
 
@@ -116,4 +133,11 @@ TEST(FeErosion, PerforatedWellAboveThreshold) {
     EXPECT_TRUE(o.perforated);
     EXPECT_GT(o.erodedMassMg, 0.0);
     EXPECT_LT(o.maxEnergyError, 0.05);
+    // Every eroded element became a particle (fe.eroded_material "particles", the default),
+    // so no free node is left, and the conversion conserves momentum: the ledger's z-momentum
+    // (alive + deleted) stays at its initial value to round-off, far inside the 1e-6 of the
+    // SPH conservation requirement.
+    EXPECT_EQ(o.plateParticles, o.eroded);
+    EXPECT_EQ(o.freeNodes, 0U);
+    EXPECT_LT(o.momentumDrift, 1e-6);
 }

@@ -56,6 +56,9 @@ TEST(FeResume, CheckpointedRunEndsBitForBit) {
     EXPECT_EQ(straight.particles().e, resumed.particles().e);
     EXPECT_EQ(straight.finiteElements()->nodes().z, resumed.finiteElements()->nodes().z);
     EXPECT_EQ(straight.finiteElements()->nodes().vr, resumed.finiteElements()->nodes().vr);
+    // Eroded elements became particles: their slots and the nodes' reduced masses.
+    EXPECT_EQ(straight.particles().mass, resumed.particles().mass);
+    EXPECT_EQ(straight.finiteElements()->nodes().mass, resumed.finiteElements()->nodes().mass);
     EXPECT_EQ(straight.finiteElements()->elements().e, resumed.finiteElements()->elements().e);
     EXPECT_EQ(straight.finiteElements()->elements().alive,
               resumed.finiteElements()->elements().alive);

@@ -37,7 +37,61 @@ std::size_t erodeCore(SyntheticRun& run, double radius) {
     return eroded;
 }
 
+/// Appends to every snapshot one unused particle slot per wall element (Alive 0, Mass 0, at
+/// the element's centroid), as hvi-run holds them in reserve for eroded elements.
+void addReserveSlots(SyntheticRun& run) {
+    const auto& fe = run.initialFe;
+    const std::size_t ne = fe.elements.alive.size();
+    std::vector<io::ParticleFields*> all{&run.initial};
+    for (auto& snap : run.snapshots) {
+        all.push_back(&snap);
+    }
+    for (io::ParticleFields* f : all) {
+        for (std::size_t e = 0; e < ne; ++e) {
+            double z = 0.0, r = 0.0;
+            for (std::size_t k = 0; k < 4; ++k) {
+                const auto n = static_cast<std::size_t>(fe.elements.connectivity[4 * e + k]);
+                z += 0.25 * fe.nodes.z[n];
+                r += 0.25 * fe.nodes.r[n];
+            }
+            f->z.push_back(z);
+            f->r.push_back(r);
+            f->vz.push_back(0.0);
+            f->vr.push_back(0.0);
+            f->mass.push_back(0.0);
+            f->density.push_back(2.703);
+            f->pressure.push_back(0.0);
+            f->internalEnergy.push_back(0.0);
+            f->smoothingLength.push_back(0.065);
+            f->damage.push_back(0.0);
+            f->plasticStrain.push_back(0.0);
+            if (!f->stressDeviator.empty()) {
+                f->stressDeviator.insert(f->stressDeviator.end(), 3, 0.0);
+            }
+            f->bodyId.push_back(fe.elements.bodyId[e]);
+            f->alive.push_back(0);
+        }
+    }
+}
+
 } // namespace
+
+TEST(FiniteElements, UnusedParticleSlotsAreNotMaterial) {
+    // An intact meshed wall whose reserve of particle slots (not alive, no mass) fills it:
+    // the slots are no failed or deleted material, so the wall holds and nothing is counted.
+    SyntheticRun run(feWallScene());
+    run.addSnapshot(1.0);
+    const std::size_t particles = run.initial.z.size();
+    addReserveSlots(run);
+    ASSERT_EQ(run.initial.z.size(), particles + 2000);
+    const auto a = test::assessSynthetic(run, "fe_reserve");
+    ASSERT_TRUE(a.rearWallPerforated);
+    EXPECT_FALSE(*a.rearWallPerforated);
+    const auto v = assess::verdictJson(a);
+    EXPECT_EQ(v["verdict"], "NP");
+    EXPECT_EQ(v["counts"]["particles"], particles);
+    EXPECT_EQ(v["mass"]["deleted_particles"], 0);
+}
 
 TEST(FiniteElements, IntactMeshedWallIsNotPerforated) {
     SyntheticRun run(feWallScene());
