@@ -149,6 +149,7 @@ Scene parseScene(const json& document, const std::string& file,
     scene.sph.avBeta = sph.at("av_beta");
     scene.sph.minDensityRatio = sph.at("min_density_ratio");
     scene.sph.runawaySpeedFactor = sph.at("runaway_speed_factor");
+    scene.sph.artificialStress = sph.at("artificial_stress");
 
     const json& fe = doc.at("fe");
     scene.fe.elementSize = fe.value("element_size_mm", scene.sph.particleSpacing);

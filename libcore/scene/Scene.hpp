@@ -56,6 +56,7 @@ struct SphControls {
     double avAlpha = 1.0, avBeta = 2.0;
     double minDensityRatio = 0.5;
     double runawaySpeedFactor = 2.0;
+    double artificialStress = 0.0; ///< epsilon of Monaghan's artificial stress (0: off) [-]
 };
 
 struct FeControls {

@@ -8,10 +8,11 @@
 // axisymmetric reduction (nothing lines up like that in 3D) that decided three verdicts the
 // wrong way. Turned into particles, the eroded material keeps its pressure and strength
 // state, spreads radially and joins the debris cloud, as the study's hybrid Autodyn setup
-// and the open codes do: EPIC converts distorted elements into particles (Johnson, Stryk &
-// Beissel (1996), "SPH for high velocity impact computations", Comput. Methods Appl. Mech.
-// Eng. 139:347; Johnson, Beissel & Stryk (2002), Comput. Methods Appl. Mech. Eng. 191:2451),
-// and OpenRadioss activates SPH particles held in reserve when a solid fails (/SOL2SPH).
+// and the open codes do: EPIC converts distorted elements into particles (Johnson, Stryk,
+// Holmquist & Beissel (2002), "An algorithm to automatically convert distorted finite
+// elements into meshless particles during dynamic deformation", Int. J. Impact Eng.
+// 27:997), and OpenRadioss activates SPH particles held in reserve when a solid fails
+// (/SOL2SPH, ../shared/reference/hydrocode-notes.md section 3).
 //
 // Reserve: every element of an FE body has one particle slot, appended after the body's
 // place in the particle set when the scene is built, so each body's particles stay one

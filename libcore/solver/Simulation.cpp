@@ -120,6 +120,8 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     hydro.kernel = sph::kernelTypeFromName(m_scene.sph.kernel);
     hydro.avAlpha = m_scene.sph.avAlpha;
     hydro.avBeta = m_scene.sph.avBeta;
+    hydro.artificialStress = m_scene.sph.artificialStress;
+    hydro.spacingOverH = 1.0 / m_scene.sph.smoothingLengthFactor;
     m_hydro = std::make_unique<sph::SphHydro>(hydro);
     m_searchOptions.axisymmetric = axi;
     m_searchOptions.kernelSupport = sph::kKernelSupport;

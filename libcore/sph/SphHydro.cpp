@@ -24,6 +24,9 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
     const double alpha = opt.avAlpha, beta = opt.avBeta, eta2 = opt.avEta2;
+    const bool artificialStress = opt.artificialStress > 0.0;
+    const int exponent = opt.artificialStressExponent;
+    const double invShapeAtSpacing = 1.0 / Shape::shape(opt.spacingOverH);
     const double invPi = 1.0 / units::kPi;
     const std::size_t activeCount = list.active.size();
     const auto* src = list.source.data();
@@ -54,6 +57,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             const double vzi = di.vz, vri = di.vr;
             const double rhoi = di.rho, ci = di.cs;
             const double bzzi = di.bzz, brri = di.brr, brzi = di.brz;
+            const double azzi = di.azz, arri = di.arr, arzi = di.arz;
             double az = 0.0, ar = 0.0, de = 0.0;
             double lzz = 0.0, lzr = 0.0, lrz = 0.0, lrr = 0.0;
             double mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0;
@@ -105,13 +109,27 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                     visc = (-alpha * cbar * mu + beta * mu * mu) / rhobar;
                     maxMu = std::max(maxMu, -mu);
                 }
-                const double tzz = bzzi + dj.bzz - visc;
-                const double trr = brri + dj.brr - visc;
-                const double trz = brzi + sg * dj.brz;
+                double tzz = bzzi + dj.bzz - visc;
+                double trr = brri + dj.brr - visc;
+                double trz = brzi + sg * dj.brz;
+                // Particle i's own share of the pair's work (the compatible energy split).
+                double ozz = bzzi - 0.5 * visc, orr = brri - 0.5 * visc, orz = brzi;
+                if (artificialStress) {
+                    double f = Shape::shape(q) * invShapeAtSpacing;
+                    double fn = 1.0;
+                    for (int e = 0; e < exponent; ++e) {
+                        fn *= f;
+                    }
+                    tzz += fn * (azzi + dj.azz);
+                    trr += fn * (arri + dj.arr);
+                    trz += fn * (arzi + sg * dj.arz);
+                    ozz += fn * azzi;
+                    orr += fn * arri;
+                    orz += fn * arzi;
+                }
                 az += w * (tzz * wz + trz * wr);
                 ar += w * (trz * wz + trr * wr);
-                de -= w * (dvz * ((bzzi - 0.5 * visc) * wz + brzi * wr) +
-                           dvr * (brzi * wz + (brri - 0.5 * visc) * wr));
+                de -= w * (dvz * (ozz * wz + orz * wr) + dvr * (orz * wz + orr * wr));
                 // Velocity gradient and its linear correction matrix.
                 const double vol = dj.volume;
                 lzz -= vol * dvz * wz;
@@ -245,6 +263,22 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, Partic
         d.bzz = (szz - ps.p[i]) * inv;
         d.brr = (srr - ps.p[i]) * inv;
         d.brz = srz * inv;
+        d.azz = d.arr = d.arz = 0.0;
+        if (m_options.artificialStress > 0.0) {
+            // Principal in-plane stresses and their direction; only tension is opposed.
+            const double a = szz - ps.p[i], c = srr - ps.p[i], b = srz;
+            const double mean = 0.5 * (a + c), half = 0.5 * (a - c);
+            const double radius = std::sqrt(half * half + b * b);
+            const double s1 = mean + radius, s2 = mean - radius;
+            const double theta = 0.5 * std::atan2(b, half);
+            const double co = std::cos(theta), si = std::sin(theta);
+            const double eps = m_options.artificialStress * inv;
+            const double r1 = s1 > 0.0 ? -eps * s1 : 0.0;
+            const double r2 = s2 > 0.0 ? -eps * s2 : 0.0;
+            d.azz = r1 * co * co + r2 * si * si;
+            d.arr = r1 * si * si + r2 * co * co;
+            d.arz = (r1 - r2) * si * co;
+        }
         // Area mass A = m / (2 pi r) and area V = A / rho in the (z, r) plane.
         d.areaMass = axi ? ps.mass[i] * inv2Pi / ps.r[i] : ps.mass[i];
         d.volume = d.areaMass / ps.rho[i];

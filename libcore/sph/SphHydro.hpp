@@ -24,6 +24,16 @@
 // Velocity gradient: SPH estimate with particle volumes V_j = A_j / rho_j and the linear
 // correction matrix (Randles & Libersky 1996; Spheral's correctVelocityGradient), exact for
 // linear velocity fields. Continuity: drho/dt = -rho (tr L + D_thth) with D_thth = v_r g_r.
+// Tensile instability (particles in tension clump and the material tears too early):
+// Monaghan's artificial stress (Monaghan 2000, JCP 159:290; Gray, Monaghan & Swift 2001,
+// CMAME 190:6641, eqs. 23-27 for elastic solids). Each particle carries R_i, the tensile part
+// of its in-plane stress: in the principal frame R'_aa = -epsilon sigma'_aa / rho^2 where
+// sigma'_aa > 0, else 0, rotated back. A pair adds f_ij^n (R_i + R_j) to B_i + B_j, with
+// f_ij = W(r_ij) / W(dp) (dp the particle spacing, h-bar / smoothing factor; n = 4), a short-
+// range repulsion between particles that come closer than their spacing under tension, and
+// nothing between particles at their spacing or in compression. The energy equation carries
+// f^n R_i next to B_i, so the compatible split still conserves energy exactly. Off
+// (epsilon = 0) by default; see docs/formulation.md for the measured effect.
 // Time step (Monaghan 1992): dt_i = h_i / (c_i + 1.2 (alpha c_i + beta max_j |mu_ij|)),
 // and dt_i <= sqrt(h_i / |a_i|); the caller multiplies by the Courant factor.
 //
@@ -42,6 +52,13 @@ struct HydroOptions {
     double avAlpha = 1.0;
     double avBeta = 2.0;
     double avEta2 = 0.01; ///< eta^2 in mu's denominator: keeps mu finite for close pairs
+    /// Artificial stress against the tensile instability (epsilon; 0: off) and the kernel
+    /// ratio's exponent n (see the file comment).
+    double artificialStress = 0.0;
+    int artificialStressExponent = 4;
+    /// The particle spacing in units of h (1 / smoothing_length_factor): the distance at
+    /// which the artificial stress has its full strength.
+    double spacingOverH = 1.0 / 1.3;
 };
 
 /// What a particle contributes to its neighbours' sums, packed so a neighbour is two cache
@@ -52,7 +69,7 @@ struct alignas(64) PairData {
     double bzz, brr, brz;   ///< B = sigma / rho^2, in-plane components [GPa cm^6/g^2]
     double areaMass;        ///< A = m / (2 pi r) (planar: m) [mg/mm]
     double volume;          ///< A / rho [mm^2]
-    double pad[3];
+    double azz, arr, arz;   ///< artificial stress R / rho^2 [GPa cm^6/g^2] (0 when off)
 };
 
 class SphHydro {
