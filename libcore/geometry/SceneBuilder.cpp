@@ -104,8 +104,8 @@ RuleValue endTimeRule(const ThreatSpec& threat, const PanelFrame& frame, double 
                   "wall: L/V is the leading debris' crossing time at the impact speed, the "
                   "factor " +
                   num(kEndTimeCrossingFactor) +
-                  " lets the slower bulk of the cloud (about half the impact speed, less after "
-                  "the core) arrive, the " +
+                  " lets a cloud that a core slows to a fifth of the impact speed on average "
+                  "(measured in the source study's foam panel HITF03147-2) arrive, the " +
                   num(kEndTimeMarginUs) +
                   " us margin lets the rear wall respond; hvi-run's stop rules end the run "
                   "earlier when nothing more happens. Here L = " +
