@@ -35,7 +35,8 @@ void HviRunTool::addOptions(CLI::App& app) {
     app.add_option("--threads", m_threads, "OpenMP threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--resolution-mm", m_resolution,
-                   "Particle spacing [mm] for every body (overrides the scene)")
+                   "Particle spacing and element size [mm] for every body (overrides the "
+                   "scene)")
         ->check(CLI::PositiveNumber);
     app.add_option("--end-time-us", m_endTime, "Simulated time to stop at [us] (overrides)")
         ->check(CLI::PositiveNumber);
@@ -157,6 +158,9 @@ void HviRunTool::execute() {
     // Command-line overrides go into the document, so the run file records what ran.
     if (m_resolution > 0.0) {
         doc["sph"]["particle_spacing_mm"] = m_resolution;
+        if (doc.contains("fe") && doc["fe"].is_object() && doc["fe"].contains("element_size_mm")) {
+            doc["fe"]["element_size_mm"] = m_resolution; // else it follows the particle spacing
+        }
         if (doc.contains("bodies") && doc["bodies"].is_array()) {
             for (auto& body : doc["bodies"]) {
                 if (body.is_object() && body.contains("spacing_mm")) {

@@ -84,3 +84,22 @@ TEST(HviRunCli, HelpVersionSchema) {
     EXPECT_EQ(schema.exitCode, 0);
     EXPECT_NE(schema.out.find("particle_spacing_mm"), std::string::npos);
 }
+
+TEST(HviRunCli, ResolutionFlagSetsParticleSpacingAndElementSize) {
+    // A scene that fixes its FE element size: --resolution-mm refines both discretizations.
+    std::string text = kScene;
+    text.replace(text.find("\"shape\": {\"type\": \"plate\""), 7,
+                 "\"discretization\": \"fe\", \"shape\"");
+    text.replace(text.find("\"run\""), 5, "\"fe\": {\"element_size_mm\": 0.1}, \"run\"");
+    const auto scene = writeTemp("resolution.json", text);
+    const auto run = tempPath("resolution.h5");
+    std::filesystem::remove(run);
+    const auto r = runTool("hvi-run", scene.string() + " -o " + run.string() +
+                                          " --threads 1 --resolution-mm 0.05 --end-time-us 0.01");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    hvi::io::RunFileReader reader(run.string());
+    EXPECT_EQ(reader.scene()["sph"]["particle_spacing_mm"], 0.05);
+    EXPECT_EQ(reader.scene()["fe"]["element_size_mm"], 0.05);
+    // The 0.5 mm x 3 mm plate at 0.05 mm: 10 x 60 elements.
+    EXPECT_EQ(reader.snapshots().front().elementCount, 600u);
+}
