@@ -373,7 +373,7 @@ void build(const ParticleSet& ps, const NeighbourSearchOptions& options, Neighbo
     std::vector<std::vector<int32_t>> threadNeighbours(threads);
     std::vector<int64_t> counts(listedCount, 0);
     const double kappa = options.kernelSupport;
-#pragma omp parallel if (listedCount > kParallelMinItems)
+#pragma omp parallel if (listedCount > kParallelMinHeavyItems)
     {
         // Filled privately and handed over at the end: pushing into the shared vector of
         // vectors would make the threads write one cache line (their vectors' headers).

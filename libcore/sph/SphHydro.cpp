@@ -17,14 +17,15 @@ struct StepVote {
     int32_t particle = -1;
 };
 
-template <class Kern>
+/// `kArtificialStress`: the artificial-stress terms are compiled in (chosen once per scene, so
+/// the default path carries no per-pair test).
+template <class Kern, bool kArtificialStress>
 void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const HydroOptions& opt,
                    const std::vector<PairData>& data, ParticleRates& rates, StepVote& vote) {
     using Shape = typename Kern::ShapeType;
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
     const double alpha = opt.avAlpha, beta = opt.avBeta, eta2 = opt.avEta2;
-    const bool artificialStress = opt.artificialStress > 0.0;
     const int exponent = opt.artificialStressExponent;
     const double invShapeAtSpacing = 1.0 / Shape::shape(opt.spacingOverH);
     const double invPi = 1.0 / units::kPi;
@@ -42,7 +43,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
         const int32_t row = list.row[a];
         longestRow = std::max(longestRow, list.offset[row + 1] - list.offset[row]);
     }
-#pragma omp parallel if (activeCount > kParallelMinItems)
+#pragma omp parallel if (activeCount > kParallelMinHeavyItems)
     {
         StepVote local;
         // This particle's neighbours within the support (sized once: no per-particle fill).
@@ -114,7 +115,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 double trz = brzi + sg * dj.brz;
                 // Particle i's own share of the pair's work (the compatible energy split).
                 double ozz = bzzi - 0.5 * visc, orr = brri - 0.5 * visc, orz = brzi;
-                if (artificialStress) {
+                if constexpr (kArtificialStress) {
                     double f = Shape::shape(q) * invShapeAtSpacing;
                     double fn = 1.0;
                     for (int e = 0; e < exponent; ++e) {
@@ -285,7 +286,11 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, Partic
     }
     StepVote vote;
     withKernel(m_options.kernel, [&](auto kernel) {
-        evaluatePairs<decltype(kernel)>(ps, list, m_options, m_data, rates, vote);
+        if (m_options.artificialStress > 0.0) {
+            evaluatePairs<decltype(kernel), true>(ps, list, m_options, m_data, rates, vote);
+        } else {
+            evaluatePairs<decltype(kernel), false>(ps, list, m_options, m_data, rates, vote);
+        }
     });
     m_stableDt = vote.dt;
     m_limitingParticle = vote.particle;
