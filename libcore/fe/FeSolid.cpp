@@ -291,7 +291,36 @@ void FeSolid::assembleForces() {
     const bool strength = el.hasStrength();
     const double kappa = m_options.hourglassCoefficient;
     const double cq = m_options.bulkQuadratic, cl = m_options.bulkLinear;
-    std::fill(m_elementForce.begin(), m_elementForce.end(), 0.0);
+    // Only elements evaluated now or at the last assembly can hold a force: zero the latter's,
+    // and gather only at their nodes and the evaluated elements' (every other node's force
+    // is, and stays, zero). The first assembly (and the first after a resume) covers all.
+    const std::size_t nn = nd.size();
+    if (m_fullAssembly) {
+        std::fill(m_elementForce.begin(), m_elementForce.end(), 0.0);
+    } else {
+        for (const int32_t e : m_assembled) {
+            std::fill_n(m_elementForce.begin() + 8 * static_cast<std::ptrdiff_t>(e), 8, 0.0);
+        }
+    }
+    m_gatherNodes.clear();
+    if (m_nodeMarked.size() != nn) {
+        m_nodeMarked.assign(nn, 0);
+    }
+    for (const auto* list : {&m_assembled, &m_evaluated}) {
+        for (const int32_t e : *list) {
+            for (int a = 0; a < 4; ++a) {
+                const int32_t n = el.node(static_cast<std::size_t>(e), a);
+                if (!m_nodeMarked[static_cast<std::size_t>(n)]) {
+                    m_nodeMarked[static_cast<std::size_t>(n)] = 1;
+                    m_gatherNodes.push_back(n);
+                }
+            }
+        }
+    }
+    for (const int32_t n : m_gatherNodes) {
+        m_nodeMarked[static_cast<std::size_t>(n)] = 0;
+    }
+    m_assembled = m_evaluated;
     const std::size_t count = m_evaluated.size();
     std::vector<StepVote> votes(static_cast<std::size_t>(omp_get_max_threads()));
 #pragma omp parallel if (count > kParallelMinItems)
@@ -355,9 +384,12 @@ void FeSolid::assembleForces() {
     m_limitingElement = vote.element;
 
     // Gather the corner forces per node in a fixed (element) order.
-    const std::size_t nn = nd.size();
-#pragma omp parallel for schedule(static) if (nn > kParallelMinItems)
-    for (std::size_t n = 0; n < nn; ++n) {
+    const bool all = m_fullAssembly;
+    m_fullAssembly = false;
+    const std::size_t gatherCount = all ? nn : m_gatherNodes.size();
+#pragma omp parallel for schedule(static) if (gatherCount > kParallelMinItems)
+    for (std::size_t g = 0; g < gatherCount; ++g) {
+        const std::size_t n = all ? g : static_cast<std::size_t>(m_gatherNodes[g]);
         double fz = 0.0, fr = 0.0;
         for (int64_t k = m_nodeElementOffset[n]; k < m_nodeElementOffset[n + 1]; ++k) {
             const auto slot = static_cast<std::size_t>(m_nodeElements[static_cast<std::size_t>(k)]);
@@ -375,6 +407,7 @@ void FeSolid::restoreErosion(double energy, std::size_t count) {
 }
 
 void FeSolid::recountNodeElements() {
+    m_fullAssembly = true; // the restored forces are recomputed everywhere
     std::fill(m_nodes.elementCount.begin(), m_nodes.elementCount.end(), 0);
     for (std::size_t i = 0; i < m_elements.size(); ++i) {
         if (m_elements.alive[i]) {

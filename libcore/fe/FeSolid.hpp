@@ -131,6 +131,10 @@ private:
     std::vector<double> m_hourglassWork;          ///< hourglass work of the last update [J]
     std::vector<uint8_t> m_erode;                 ///< inverted this update: erode
     std::vector<int32_t> m_erodedNow;             ///< eroded by the last update
+    std::vector<int32_t> m_assembled;  ///< elements whose forces the last assembly wrote
+    std::vector<int32_t> m_gatherNodes; ///< nodes whose force this assembly recomputes
+    std::vector<uint8_t> m_nodeMarked;  ///< scratch for m_gatherNodes (all 0 between uses)
+    bool m_fullAssembly = true;         ///< zero and gather everything (first time, resume)
     double m_referenceDt = std::numeric_limits<double>::infinity(); ///< undisturbed elements
     double m_stableDt = 0.0;
     int32_t m_limitingElement = -1;
