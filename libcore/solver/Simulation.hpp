@@ -10,7 +10,8 @@
 //   state with the same rates; evaluate rates there; second half kick with the new rates.
 // FE nodes take the same kicks and drift; contact constrains the half-step velocities of
 // particles and nodes before the drift; the elements are updated with the half-step node
-// velocities (central difference).
+// velocities (central difference). Elements that erode in a step become SPH particles at its
+// end (solver/ErodedParticles.hpp), unless the scene keeps their mass on free nodes.
 // Time step: dt = cfl * min(package votes), grown by at most 25 % per step (a sudden jump in
 // dt after a quiet phase would skip the first steps of a new contact).
 //
