@@ -1,6 +1,7 @@
 #include "assess/Assessment.hpp"
 
 #include "assess/CoreDamageWidth.hpp"
+#include "sph/ParticleSet.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -192,7 +193,7 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
         }
         if (&info == &a.snapshots.back()) {
             for (std::size_t i = 0; i < snap.particles.z.size(); ++i) {
-                if (isUnusedSlot(snap.particles, i)) {
+                if (sph::isUnusedSlot(snap.particles.alive[i], snap.particles.mass[i])) {
                     continue;
                 }
                 ++a.particles;

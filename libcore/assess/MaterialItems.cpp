@@ -1,5 +1,7 @@
 #include "assess/MaterialItems.hpp"
 
+#include "sph/ParticleSet.hpp"
+
 #include <cstddef>
 
 namespace hvi::assess {
@@ -23,10 +25,6 @@ void elementCentroids(const io::FeFields& fe, std::vector<double>& z, std::vecto
 
 } // namespace
 
-bool isUnusedSlot(const io::ParticleFields& particles, std::size_t i) {
-    return !particles.alive[i] && particles.mass[i] == 0.0;
-}
-
 MaterialItems materialItems(const io::Snapshot& snapshot, const io::Snapshot& first) {
     MaterialItems items;
     items.timeUs = snapshot.info.timeUs;
@@ -35,7 +33,7 @@ MaterialItems materialItems(const io::Snapshot& snapshot, const io::Snapshot& fi
     const bool particlesMatch = first.particles.z.size() == np;
     const auto& reference = particlesMatch ? first.particles : p;
     for (std::size_t i = 0; i < np; ++i) {
-        if (isUnusedSlot(p, i)) {
+        if (sph::isUnusedSlot(p.alive[i], p.mass[i])) {
             continue;
         }
         items.z.push_back(p.z[i]);

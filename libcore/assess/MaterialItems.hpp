@@ -43,12 +43,9 @@ struct MaterialItems {
     bool isElement(std::size_t i) const { return i >= particleCount; }
 };
 
-/// A particle slot that holds no material: reserved for an FE element that has not eroded
-/// (Alive 0 and Mass 0; a deleted particle keeps its mass). Such slots are not items.
-bool isUnusedSlot(const io::ParticleFields& particles, std::size_t i);
-
 /// The items of `snapshot`, with reference positions from `first` (the run's first
-/// snapshot; may be the same object). Unused particle slots are left out.
+/// snapshot; may be the same object). Unused particle slots (sph::isUnusedSlot) are left
+/// out.
 MaterialItems materialItems(const io::Snapshot& snapshot, const io::Snapshot& first);
 
 } // namespace hvi::assess

@@ -51,14 +51,6 @@ int32_t ErodedParticles::slotOf(std::size_t element) const {
     return -1;
 }
 
-std::size_t ErodedParticles::unusedSlots(const sph::ParticleSet& particles) {
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-        count += !particles.alive[i] && particles.mass[i] == 0.0 ? 1 : 0;
-    }
-    return count;
-}
-
 std::vector<int32_t> ErodedParticles::convert(const std::vector<int32_t>& erodedElements,
                                               const fe::ElementSet& elements, fe::NodeSet& nodes,
                                               sph::ParticleSet& particles,
@@ -82,9 +74,8 @@ std::vector<int32_t> ErodedParticles::convert(const std::vector<int32_t>& eroded
             // reaches exactly 0, whatever the rounding of the quarters).
             const double share =
                 nodes.elementCount[n] == 0 ? nodes.mass[n] : std::min(quarter, nodes.mass[n]);
-            nodes.mass[n] -= share;
+            nodes.mass[n] -= share; // exactly 0 when it took all
             if (nodes.elementCount[n] == 0) {
-                nodes.mass[n] = 0.0;
                 nodes.alive[n] = 0;
             }
             mass += share;

@@ -64,9 +64,6 @@ public:
     /// The particle slot of element e (-1: its body has no reserve).
     int32_t slotOf(std::size_t element) const;
 
-    /// The number of unused slots in `particles`.
-    static std::size_t unusedSlots(const sph::ParticleSet& particles);
-
 private:
     struct Range {
         std::size_t firstElement = 0, elementCount = 0, firstParticle = 0;

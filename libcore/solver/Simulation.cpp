@@ -544,8 +544,7 @@ Totals Simulation::totals() const {
     Totals t;
     for (std::size_t i = 0; i < ps.size(); ++i) {
         if (!ps.alive[i]) {
-            // A slot with no mass is a reserve particle no eroded element has used yet.
-            t.deleted += ps.mass[i] > 0.0 ? 1 : 0;
+            t.deleted += sph::isUnusedSlot(ps.alive[i], ps.mass[i]) ? 0 : 1;
             continue;
         }
         ++t.alive;

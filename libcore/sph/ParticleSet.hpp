@@ -47,6 +47,13 @@ private:
     bool m_withStrength = false;
 };
 
+/// A particle slot that holds no material: one held in reserve for an FE element that has not
+/// eroded yet (solver/ErodedParticles.hpp). Not alive and massless; a deleted particle keeps
+/// its mass. The one definition for the solver, the run file and hvi-assess.
+inline bool isUnusedSlot(uint8_t alive, double mass) {
+    return !alive && mass == 0.0;
+}
+
 /// Time derivatives of the evolved fields, filled by the physics packages.
 struct ParticleRates {
     std::vector<double> az, ar;       ///< acceleration [km/s/us]

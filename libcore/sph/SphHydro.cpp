@@ -26,7 +26,6 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
     const double alpha = opt.avAlpha, beta = opt.avBeta, eta2 = opt.avEta2;
-    const int exponent = opt.artificialStressExponent;
     const double invShapeAtSpacing = 1.0 / Shape::shape(opt.spacingOverH);
     const double invPi = 1.0 / units::kPi;
     const std::size_t activeCount = list.active.size();
@@ -116,11 +115,9 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 // Particle i's own share of the pair's work (the compatible energy split).
                 double ozz = bzzi - 0.5 * visc, orr = brri - 0.5 * visc, orz = brzi;
                 if constexpr (kArtificialStress) {
-                    double f = Shape::shape(q) * invShapeAtSpacing;
-                    double fn = 1.0;
-                    for (int e = 0; e < exponent; ++e) {
-                        fn *= f;
-                    }
+                    const double f = Shape::shape(q) * invShapeAtSpacing;
+                    const double f2 = f * f;
+                    const double fn = f2 * f2; // n = 4 (Gray, Monaghan & Swift 2001)
                     tzz += fn * (azzi + dj.azz);
                     trr += fn * (arri + dj.arr);
                     trz += fn * (arzi + sg * dj.arz);

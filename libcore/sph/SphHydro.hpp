@@ -28,10 +28,11 @@
 // Monaghan's artificial stress (Monaghan 2000, JCP 159:290; Gray, Monaghan & Swift 2001,
 // CMAME 190:6641, eqs. 23-27 for elastic solids). Each particle carries R_i, the tensile part
 // of its in-plane stress: in the principal frame R'_aa = -epsilon sigma'_aa / rho^2 where
-// sigma'_aa > 0, else 0, rotated back. A pair adds f_ij^n (R_i + R_j) to B_i + B_j, with
-// f_ij = W(r_ij) / W(dp) (dp the particle spacing, h-bar / smoothing factor; n = 4), a short-
-// range repulsion between particles that come closer than their spacing under tension, and
-// nothing between particles at their spacing or in compression. The energy equation carries
+// sigma'_aa > 0, else 0, rotated back. A pair adds f_ij^4 (R_i + R_j) to B_i + B_j, with
+// f_ij = W(r_ij) / W(dp) (dp the particle spacing, h-bar / smoothing factor): a repulsion
+// between particles in tension that is 1 at the spacing (where it cancels over a uniform
+// lattice), grows steeply as a pair closes in below it (the clumping it opposes) and fades
+// beyond it; nothing in compression. The energy equation carries
 // f^n R_i next to B_i, so the compatible split still conserves energy exactly. Off
 // (epsilon = 0) by default; see docs/formulation.md for the measured effect.
 // Time step (Monaghan 1992): dt_i = h_i / (c_i + 1.2 (alpha c_i + beta max_j |mu_ij|)),
@@ -52,10 +53,8 @@ struct HydroOptions {
     double avAlpha = 1.0;
     double avBeta = 2.0;
     double avEta2 = 0.01; ///< eta^2 in mu's denominator: keeps mu finite for close pairs
-    /// Artificial stress against the tensile instability (epsilon; 0: off) and the kernel
-    /// ratio's exponent n (see the file comment).
+    /// Artificial stress against the tensile instability (epsilon; 0: off; file comment).
     double artificialStress = 0.0;
-    int artificialStressExponent = 4;
     /// The particle spacing in units of h (1 / smoothing_length_factor): the distance at
     /// which the artificial stress has its full strength.
     double spacingOverH = 1.0 / 1.3;

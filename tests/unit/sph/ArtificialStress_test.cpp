@@ -2,8 +2,7 @@
 // eqs. 23-27): it acts only on tensile principal stresses, pushes a pair in tension apart
 // (the remedy for the tensile instability, where such pairs clump), vanishes in compression,
 // and keeps the pair forces antisymmetric and the compatible energy split exact.
-#include "sph/NeighbourSearch.hpp"
-#include "sph/SphHydro.hpp"
+#include "PlanarSph.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -37,18 +36,10 @@ ParticleSet lattice(double spacing, double p, double szz, double srr, double srz
 
 ParticleRates evaluate(const ParticleSet& ps, double epsilon) {
     HydroOptions hydro;
-    hydro.axisymmetric = false;
     hydro.artificialStress = epsilon;
     hydro.spacingOverH = 1.0 / 1.3;
-    NeighbourSearchOptions search;
-    search.axisymmetric = false;
-    search.skipDormant = false;
-    NeighbourList list;
-    buildNeighbourList(ps, search, list);
     ParticleRates rates;
-    rates.resize(ps.size(), true);
-    rates.zero();
-    SphHydro(hydro).evaluate(ps, list, rates);
+    hvi::test::evaluatePlanar(ps, hydro, rates);
     return rates;
 }
 

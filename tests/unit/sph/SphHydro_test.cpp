@@ -3,8 +3,7 @@
 // with the artificial-viscosity signal speed); a particle with none exchanges no signal, so it
 // votes only h / |v| (it must not cross its own support in a step), however high its sound
 // speed.
-#include "sph/NeighbourSearch.hpp"
-#include "sph/SphHydro.hpp"
+#include "PlanarSph.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -17,19 +16,8 @@ constexpr double kH = 0.05;
 
 /// Evaluates `ps` (planar) and returns the vote.
 double voteOf(const ParticleSet& ps) {
-    HydroOptions hydro;
-    hydro.axisymmetric = false;
-    NeighbourSearchOptions search;
-    search.axisymmetric = false;
-    search.skipDormant = false;
-    NeighbourList list;
-    buildNeighbourList(ps, search, list);
     ParticleRates rates;
-    rates.resize(ps.size(), false);
-    rates.zero();
-    SphHydro sph(hydro);
-    sph.evaluate(ps, list, rates);
-    return sph.stableTimeStep();
+    return hvi::test::evaluatePlanar(ps, HydroOptions{}, rates).stableTimeStep();
 }
 
 ParticleSet particle(double z, double vz, double soundSpeed) {
