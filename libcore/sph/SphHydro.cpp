@@ -62,6 +62,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             double lzz = 0.0, lzr = 0.0, lrz = 0.0, lrr = 0.0;
             double mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0;
             double gr = 0.0; // radial part of g = (2/rho) sum (w - A) grad W ~ e_r / r
+            double viscHoop = 0.0; // sum (w - A) Pi grad_r W: the viscous pressure's hoop part
             double maxMu = 0.0;
             // Pass 1: keep the listed candidates inside the support (the list reaches a Verlet
             // skin further). Branch-free, order-preserving compaction.
@@ -139,7 +140,9 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 mrz -= vol * dr * wz;
                 mrr -= vol * dr * wr;
                 if (axi) {
-                    gr += (w - areaMass) * wr;
+                    const double excess = (w - areaMass) * wr;
+                    gr += excess;
+                    viscHoop += excess * visc;
                 }
             }
             // Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
@@ -170,8 +173,25 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 // would break the pairwise cancellation that conserves z-momentum, and no
                 // antisymmetric pair term can stand in for it (docs/formulation.md).
                 const double hoopR = -(sigmaThTh / rhoi) * grr;
-                ar += hoopR;
-                de -= vri * hoopR;
+                // The viscous stress's hoop part. The radius-weighted pair sum gives the
+                // in-plane viscous stress its cylindrical divergence term sigma_rr^v / r, which
+                // only a hoop stress sigma_thth^v can balance. The pair viscosity has a
+                // sigma_rr^v even where nothing is compressed radially (the diagonal pairs of a
+                // compression along z); r and theta are then both transverse and equivalent,
+                // so sigma_thth^v = sigma_rr^v, which sum (w - A) Pi grad_r W adds exactly.
+                // Without it a plate's impact shock pulled particles towards the axis with a
+                // force growing as 1/r and held the first particle column on the axis
+                // (tests/unit/sph/AxisViscosity_test.cpp). Where the flow is compressed
+                // radially (a converging shock, as in the Noh problem) sigma_rr^v is that
+                // compression's own viscous stress and the hoop direction need not share it,
+                // so the hoop part fades with the radial share of the in-plane compression.
+                const double compressZ = std::max(-lzz, 0.0);
+                const double compressR = std::max(-lrr, 0.0);
+                const double compressMax = std::max(compressZ, compressR);
+                const double hoopShare = compressMax > 0.0 ? 1.0 - compressR / compressMax : 1.0;
+                const double hoopViscR = hoopShare * viscHoop;
+                ar += hoopR + hoopViscR;
+                de -= vri * (hoopR + hoopViscR);
             }
             rates.az[i] += az;
             rates.ar[i] += ar;

@@ -1,5 +1,5 @@
-// One SPH evaluation of a hand-placed planar particle set: exact neighbour lists (no dormant
-// skipping), zeroed rates, one SphHydro::evaluate. For unit tests of the pair terms.
+// One SPH evaluation of a hand-placed particle set (planar or axisymmetric): exact neighbour lists
+// (no dormant skipping), zeroed rates, one SphHydro::evaluate. For unit tests of the pair terms.
 #pragma once
 
 #include "sph/NeighbourSearch.hpp"
@@ -13,6 +13,23 @@ inline sph::SphHydro evaluatePlanar(const sph::ParticleSet& ps, sph::HydroOption
     hydro.axisymmetric = false;
     sph::NeighbourSearchOptions search;
     search.axisymmetric = false;
+    search.skipDormant = false;
+    sph::NeighbourList list;
+    sph::buildNeighbourList(ps, search, list);
+    rates.resize(ps.size(), ps.hasStrength());
+    rates.zero();
+    sph::SphHydro hydroPackage(hydro);
+    hydroPackage.evaluate(ps, list, rates);
+    return hydroPackage;
+}
+
+/// The same in axisymmetric mode: mirror ghosts across r = 0, radius-weighted pair terms and
+/// the hoop terms.
+inline sph::SphHydro evaluateAxisymmetric(const sph::ParticleSet& ps, sph::HydroOptions hydro,
+                                          sph::ParticleRates& rates) {
+    hydro.axisymmetric = true;
+    sph::NeighbourSearchOptions search;
+    search.axisymmetric = true;
     search.skipDormant = false;
     sph::NeighbourList list;
     sph::buildNeighbourList(ps, search, list);
