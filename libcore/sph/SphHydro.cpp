@@ -63,6 +63,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             double mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0;
             double gr = 0.0; // radial part of g = (2/rho) sum (w - A) grad W ~ e_r / r
             double viscHoop = 0.0; // sum (w - A) Pi grad_r W: the viscous pressure's hoop part
+            double gradientExcess = 0.0; // sum (w - A) (B_j - B_i)_r . grad W (see below)
             double maxMu = 0.0;
             // Pass 1: keep the listed candidates inside the support (the list reaches a Verlet
             // skin further). Branch-free, order-preserving compaction.
@@ -143,6 +144,8 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                     const double excess = (w - areaMass) * wr;
                     gr += excess;
                     viscHoop += excess * visc;
+                    gradientExcess += (w - areaMass) * ((sg * dj.brz - brzi) * wz +
+                                                        (dj.brr - brri) * wr);
                 }
             }
             // Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
@@ -181,7 +184,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 // so sigma_thth^v = sigma_rr^v, which sum (w - A) Pi grad_r W adds exactly.
                 // Without it a plate's impact shock pulled particles towards the axis with a
                 // force growing as 1/r and held the first particle column on the axis
-                // (tests/unit/sph/AxisViscosity_test.cpp). Where the flow is compressed
+                // (tests/unit/sph/AxisForces_test.cpp). Where the flow is compressed
                 // radially (a converging shock, as in the Noh problem) sigma_rr^v is that
                 // compression's own viscous stress and the hoop direction need not share it,
                 // so the hoop part fades with the radial share of the in-plane compression.
@@ -190,8 +193,17 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 const double compressMax = std::max(compressZ, compressR);
                 const double hoopShare = compressMax > 0.0 ? 1.0 - compressR / compressMax : 1.0;
                 const double hoopViscR = hoopShare * viscHoop;
-                ar += hoopR + hoopViscR;
-                de -= vri * (hoopR + hoopViscR);
+                // The radius-weighted pair sum is the area-weighted divergence plus
+                // sum (w - A)(B_i + B_j).grad W; of the latter only the particle's own part,
+                // 2 B_i sum (w - A) grad W = (sigma_i . g) / rho_i ~ sigma_rr / (rho r), belongs to
+                // the cylindrical divergence. The rest, sum (w - A)(B_j - B_i).grad W, is
+                // (1/2r) times a second moment of the stress differences: zero for a linear
+                // field, but at a shock travelling along z it is a radial force growing as 1/r
+                // (a plate impact in RZ drove the first particle columns radially at up to a
+                // tenth of the particle velocity). It is taken out of the radial force.
+                const double stressExcessR = -gradientExcess;
+                ar += hoopR + hoopViscR + stressExcessR;
+                de -= vri * (hoopR + hoopViscR + stressExcessR);
             }
             rates.az[i] += az;
             rates.ar[i] += ar;
