@@ -7,12 +7,13 @@
 
 namespace hvi::test {
 
-/// Evaluates `ps` with `hydro` (made planar) into `rates`; returns the package for its vote.
-inline sph::SphHydro evaluatePlanar(const sph::ParticleSet& ps, sph::HydroOptions hydro,
-                                    sph::ParticleRates& rates) {
-    hydro.axisymmetric = false;
+/// Evaluates `ps` with `hydro` in the given geometry (exact lists, no dormant skipping) into
+/// `rates`; returns the package for its vote.
+inline sph::SphHydro evaluateIn(bool axisymmetric, const sph::ParticleSet& ps,
+                                sph::HydroOptions hydro, sph::ParticleRates& rates) {
+    hydro.axisymmetric = axisymmetric;
     sph::NeighbourSearchOptions search;
-    search.axisymmetric = false;
+    search.axisymmetric = axisymmetric;
     search.skipDormant = false;
     sph::NeighbourList list;
     sph::buildNeighbourList(ps, search, list);
@@ -23,21 +24,16 @@ inline sph::SphHydro evaluatePlanar(const sph::ParticleSet& ps, sph::HydroOption
     return hydroPackage;
 }
 
-/// The same in axisymmetric mode: mirror ghosts across r = 0, radius-weighted pair terms and
-/// the hoop terms.
+/// Planar (plane strain).
+inline sph::SphHydro evaluatePlanar(const sph::ParticleSet& ps, sph::HydroOptions hydro,
+                                    sph::ParticleRates& rates) {
+    return evaluateIn(false, ps, hydro, rates);
+}
+
+/// Axisymmetric: mirror ghosts across r = 0, radius-weighted pair terms and the hoop terms.
 inline sph::SphHydro evaluateAxisymmetric(const sph::ParticleSet& ps, sph::HydroOptions hydro,
                                           sph::ParticleRates& rates) {
-    hydro.axisymmetric = true;
-    sph::NeighbourSearchOptions search;
-    search.axisymmetric = true;
-    search.skipDormant = false;
-    sph::NeighbourList list;
-    sph::buildNeighbourList(ps, search, list);
-    rates.resize(ps.size(), ps.hasStrength());
-    rates.zero();
-    sph::SphHydro hydroPackage(hydro);
-    hydroPackage.evaluate(ps, list, rates);
-    return hydroPackage;
+    return evaluateIn(true, ps, hydro, rates);
 }
 
 } // namespace hvi::test

@@ -9,6 +9,7 @@
 // run stopped at about 0.25 us (no_new_penetration) with the slab still in flight, as
 // HITF03147-3 stopped with its debris pushing the rear facesheet at 0.7 km/s.
 #include "SceneRun.hpp"
+#include "SyntheticRun.hpp"
 
 #include <gtest/gtest.h>
 #include <string>
@@ -18,31 +19,18 @@ using nlohmann::json;
 
 namespace {
 
-json plate(const std::string& name, const std::string& role, double zFront, double thickness,
-           double outerRadius, double speed) {
-    return {{"name", name},
-            {"role", role},
-            {"material", "Al6061-T6"},
-            {"shape",
-             {{"type", "plate"},
-              {"z_front_mm", zFront},
-              {"thickness_mm", thickness},
-              {"outer_radius_mm", outerRadius}}},
-            {"velocity", {{"z_km_s", speed}}}};
-}
-
 std::string stopOf(double slabSpeed) {
-    const json doc = {
-        {"sph", {{"particle_spacing_mm", 0.04}}},
-        {"run",
-         {{"end_time_us", 1.0},
-          {"stop_debris_speed_km_s", 0.1},
-          {"stop_no_new_penetration_us", 0.25}}},
-        {"domain", {{"radius_mm", 1.2}}},
-        {"bodies",
-         {plate("slab", "projectile", 0.3, 0.12, 0.5, slabSpeed),
-          plate("bumper", "bumper", 0.0, 0.2, 1.0, 0.0),
-          plate("wall", "rear_wall", 1.0, 0.2, 1.0, 0.0)}}};
+    json slab = test::plateBody("slab", "projectile", 0.3, 0.12, 0.5);
+    slab["velocity"] = {{"z_km_s", slabSpeed}};
+    const json doc = {{"sph", {{"particle_spacing_mm", 0.04}}},
+                      {"run",
+                       {{"end_time_us", 1.0},
+                        {"stop_debris_speed_km_s", 0.1},
+                        {"stop_no_new_penetration_us", 0.25}}},
+                      {"domain", {{"radius_mm", 1.2}}},
+                      {"bodies",
+                       {slab, test::plateBody("bumper", "bumper", 0.0, 0.2, 1.0),
+                        test::plateBody("wall", "rear_wall", 1.0, 0.2, 1.0)}}};
     const auto scene = test::makeScene(doc);
     solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
     test::runUntil(sim, 1.0);
