@@ -141,11 +141,12 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 mrz -= vol * dr * wz;
                 mrr -= vol * dr * wr;
                 if (axi) {
-                    const double excess = (w - areaMass) * wr;
+                    const double weightExcess = w - areaMass;
+                    const double excess = weightExcess * wr;
                     gr += excess;
                     viscHoop += excess * visc;
-                    gradientExcess += (w - areaMass) * ((sg * dj.brz - brzi) * wz +
-                                                        (dj.brr - brri) * wr);
+                    gradientExcess +=
+                        weightExcess * ((sg * dj.brz - brzi) * wz + (dj.brr - brri) * wr);
                 }
             }
             // Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
