@@ -18,10 +18,10 @@
 // (0 once touching), gets the normal impulse that brings the approach down to that,
 //     J = (-v_n - max(g - R, 0)/dt) / (1/m_s + (1-xi)^2/m_A + xi^2/m_B),
 // applied as +J n to the slave and -J (1-xi) n, -J xi n to A and B (a slave slightly inside,
-// R - g below 2 % of its spacing, which serial resolution can leave when a later impulse
-// moves the same master, is made to separate at 0.2 (R - g)/dt, so overlaps never build up;
-// a deeper one, left by erosion exposing a surface, is only kept from growing). So the drift never makes
-// it penetrate, the pair's momentum is conserved exactly, nothing is ever pushed apart or
+// R - g below 2 % of its spacing, which the iteration below can leave when it stops short,
+// is made to separate at 0.2 (R - g)/dt, so overlaps never build up;
+// a deeper one, left by erosion exposing a surface, is only kept from growing). So the drift never
+// makes it penetrate, the pair's momentum is conserved exactly, nothing is ever pushed apart or
 // pulled back (no position corrections, no sticking), and contact cannot create energy.
 // The kinetic energy an impulse takes (a perfectly inelastic normal collision of the contact
 // points) becomes heat, half in the slave (a particle's specific energy, or an element of a
@@ -42,8 +42,10 @@
 // Time step: a slave approaching a segment at normal speed v_n votes dt <= (c/2) / v_n (c: the
 // search cell, 2.5 times the largest body spacing; times the Courant factor), so no approach
 // outruns the search, and every pair that could touch within a step is constrained (no
-// pass-through at any speed). Contacts are found in parallel and resolved serially in slave
-// order, so the result does not depend on the thread count.
+// pass-through at any speed). Contacts are found in parallel; the impulses of a step are
+// solved together by projected Gauss-Seidel passes in slave order (each contact's
+// accumulated impulse stays >= 0; KinematicContact.cpp, step 3), so the result does not
+// depend on the thread count.
 //
 // Units: mm, us, mg (km/s, J).
 #pragma once
