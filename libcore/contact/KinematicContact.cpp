@@ -367,6 +367,7 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
     };
     struct Constraint {
         std::size_t slave = 0;           ///< index into the slave list
+        Slave sl{};                      ///< its state (pointers into the arrays)
         int32_t target = 0;              ///< segment, or -1 - particle index
         std::size_t a = 0, b = 0, j = 0; ///< master nodes, or master particle
         double nz = 0.0, nr = 0.0, wa = 0.0, wb = 0.0, invSum = 0.0, allowed = 0.0;
@@ -386,6 +387,7 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         for (int q = 0; q < c.count; ++q) {
             Constraint con;
             con.slave = k;
+            con.sl = sl;
             con.target = c.target[static_cast<std::size_t>(q)];
             double gap = 0.0;
             con.invSum = 1.0 / sl.mass;
@@ -448,7 +450,7 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
     for (int pass = 0; pass < kMaxPasses; ++pass) {
         double largestChange = 0.0;
         for (auto& con : constraints) {
-            const Slave sl = slaveAt(con.slave);
+            const Slave& sl = con.sl;
             double vn = 0.0;
             if (con.target >= 0) {
                 vn = (*sl.vz - (con.wa * nd.vz[con.a] + con.wb * nd.vz[con.b])) * con.nz +

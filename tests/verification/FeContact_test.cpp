@@ -11,6 +11,7 @@
 // this low-speed elastic rebound the residual error is 2 % (FE block) and 8 % (SPH block) of
 // the small impact energy; docs/formulation.md discusses it.
 #include "SceneRun.hpp"
+#include "SyntheticRun.hpp"
 #include "Tolerance.hpp"
 
 #include <algorithm>
@@ -175,25 +176,11 @@ TEST(FeContact, FeBlockReboundsFromFePlate) {
 // (+71 %). The impulses solved together give +4 %; the bar is 15 %.
 TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
     constexpr double kSize = 0.04;
-    const json flyer = {{"name", "flyer"},
-                        {"role", "projectile"},
-                        {"material", "Al6061-T6"},
-                        {"discretization", "fe"},
-                        {"shape",
-                         {{"type", "plate"},
-                          {"z_front_mm", -0.42},
-                          {"thickness_mm", 0.4},
-                          {"outer_radius_mm", 1.5}}},
-                        {"velocity", {{"z_km_s", 2.0}}}};
-    const json target = {{"name", "target"},
-                         {"role", "rear_wall"},
-                         {"material", "Al6061-T6"},
-                         {"discretization", "fe"},
-                         {"shape",
-                          {{"type", "plate"},
-                           {"z_front_mm", 0.0},
-                           {"thickness_mm", 0.6},
-                           {"outer_radius_mm", 2.0}}}};
+    json flyer = test::plateBody("flyer", "projectile", -0.42, 0.4, 1.5);
+    flyer["discretization"] = "fe";
+    flyer["velocity"] = {{"z_km_s", 2.0}};
+    json target = test::plateBody("target", "rear_wall", 0.0, 0.6, 2.0);
+    target["discretization"] = "fe";
     const auto scene = test::makeScene({{"geometry", "axisymmetric"},
                                         {"sph", {{"particle_spacing_mm", kSize}}},
                                         {"fe", {{"element_size_mm", kSize}}},
