@@ -37,6 +37,11 @@ std::string summaryLine(const json& v) {
                                                               : std::string("none"));
     line += v["complete"].get<bool>() ? " (complete run" : " (PARTIAL run";
     line += ", t = " + number(v["final_time_us"], "%.3f") + " us)";
+    const json& wall = v["rear_wall"];
+    if (wall.is_object() && wall["axis_confined"].get<bool>()) {
+        line += "; perforated only within " + number(wall["perforation_radius_mm"], "%.3f") +
+                " mm of the axis";
+    }
     line += "; hole " + number(v["bumper_hole_diameter_mm"], "%.3f") + " mm";
     line += "; depth " + number(v["penetration_depth_mm"], "%.3f") + " mm";
     line += "; debris front " + number(v["debris_cloud"]["leading_edge_z_mm"], "%.3f") + " mm at " +

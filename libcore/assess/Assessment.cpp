@@ -165,6 +165,14 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
             a.throughThicknessFailure |= m.rearWall->throughThicknessFailure;
             a.materialCrossed |= m.rearWall->materialCrossed;
             a.detachedSpall |= m.rearWall->detachedSpall;
+            a.openColumns = std::max(a.openColumns, m.rearWall->openColumns);
+            a.openRadiusMm = std::max(a.openRadiusMm, m.rearWall->openRadiusMm);
+            if (m.rearWall->perforated) {
+                const bool firstPerforated = a.perforationTimeUs == m.timeUs;
+                a.perforationRadiusMm =
+                    std::max(a.perforationRadiusMm, m.rearWall->perforationRadiusMm);
+                a.axisConfined = (firstPerforated || a.axisConfined) && m.rearWall->axisConfined;
+            }
         }
         if (m.penetration) {
             if (!a.penetrationDepthMm || m.penetration->depthMm > *a.penetrationDepthMm) {
@@ -233,6 +241,13 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
         a.warnings.push_back("the solver stopped on its rear-wall perforation rule (any "
                              "material behind the rear face) but the assessment finds no "
                              "perforation (docs/metrics.md); the verdict is NP");
+    }
+    if (a.axisConfined) {
+        a.warnings.push_back(
+            "the rear wall is perforated only within " + fmt("%.3g", a.perforationRadiusMm) +
+            " mm of the axis (" + fmt("%.3g", a.criteria.axisBandSpacings) +
+            " spacings): in 2D axisymmetry material on the axis cannot move off it, and the "
+            "verdict rests on the first element columns there (docs/metrics.md)");
     }
     if (a.rearWallPerforated && !*a.rearWallPerforated && !a.complete) {
         a.warnings.push_back("NP is provisional: the run did not finish");

@@ -66,6 +66,10 @@ struct Assessment {
     std::optional<bool> rearWallPerforated;
     std::optional<double> perforationTimeUs;
     bool throughThicknessFailure = false, materialCrossed = false, detachedSpall = false;
+    std::size_t openColumns = 0;      ///< most rear-wall columns open through (any snapshot)
+    double openRadiusMm = 0.0;        ///< outermost open column's outer edge (any snapshot)
+    double perforationRadiusMm = 0.0; ///< largest perforation radius over the snapshots
+    bool axisConfined = false;        ///< perforated, and within the axis band in every snapshot
     std::optional<double> penetrationDepthMm;
     std::optional<std::size_t> deepestBody;
     std::vector<std::size_t> reachedBodies, perforatedLayers;

@@ -13,6 +13,7 @@ json Criteria::toJson() const {
             {"hole_edge_bins", holeEdgeBins},
             {"min_crossing_items", minCrossingItems},
             {"link_spacings", linkSpacings},
+            {"axis_band_spacings", axisBandSpacings},
             {"leading_edge_mass_fraction", leadingEdgeMassFraction},
             {"front_mass_fraction", frontMassFraction}};
 }

@@ -40,6 +40,11 @@ struct Criteria {
     /// Failed items closer than this many particle spacings are connected (1.5 links the 8
     /// lattice neighbours, diagonal ones at sqrt(2) spacings).
     double linkSpacings = 1.5;
+    /// A perforation lying wholly within this many spacings of the axis is flagged as confined
+    /// to the axis (axisymmetric runs). 3: the particle columns within one kernel support
+    /// (2 h = 2.6 spacings at the default h = 1.3 spacings) of the axis, whose SPH sums reach
+    /// the axis ghosts, rounded up to whole columns.
+    double axisBandSpacings = 3.0;
     /// The leading edge of the debris cloud has this fraction of the debris mass ahead of it
     /// (ignores a few stray particles ahead of the cloud).
     double leadingEdgeMassFraction = 1.0e-3;

@@ -80,6 +80,7 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
     }
 
     // (b) Material beyond the surface, moving outward.
+    double crossingRadius = 0.0;
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (!items.alive[i] || items.vz[i] <= 0.0 || items.body[i] < 0) {
             continue;
@@ -103,11 +104,47 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
         if (beyond > s) {
             ++result.crossingItems;
             result.crossingMassMg += items.mass[i];
+            crossingRadius = std::max(crossingRadius, items.r[i]);
         }
     }
     result.materialCrossed =
         result.crossingItems >= static_cast<std::size_t>(std::max(1, criteria.minCrossingItems));
     result.perforated = result.throughThicknessFailure || result.materialCrossed;
+
+    // Open columns, in the material frame: every wall item of the bin failed. For an FE wall
+    // the items are its elements; the particles its eroded elements became are debris.
+    std::vector<std::size_t> itemsIn(n, 0), failedIn(n, 0);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (!belongsTo(items, i, wall) || (body.fe && !items.isElement(i))) {
+            continue;
+        }
+        const long k = binOf(items.r0[i]);
+        if (k < 0 || k >= count) {
+            continue;
+        }
+        ++itemsIn[static_cast<std::size_t>(k)];
+        if (isFailed(items, i, layout, criteria)) {
+            ++failedIn[static_cast<std::size_t>(k)];
+        }
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (itemsIn[k] > 0 && failedIn[k] == itemsIn[k]) {
+            ++result.openColumns;
+            result.openRadiusMm = body.rMin + static_cast<double>(k + 1) * w;
+        }
+    }
+    if (result.perforated) {
+        double outer = result.openRadiusMm;
+        if (result.throughThicknessFailure) {
+            outer = std::max(outer, std::min(path.pathRadiusMm + 0.5 * s, body.rMax));
+        }
+        if (result.materialCrossed) {
+            outer = std::max(outer, crossingRadius + 0.5 * s);
+        }
+        result.perforationRadiusMm = outer;
+        result.axisConfined = layout.axisymmetric && body.rMin <= 0.0 &&
+                              outer <= criteria.axisBandSpacings * s * (1.0 + 1e-9);
+    }
     return result;
 }
 

@@ -13,8 +13,17 @@
 //      more than 1.5 spacings apart. So a bulging wall with debris in its dent is not
 //      perforated, failed wall material still in place still holds debris back, and a bin
 //      with no wall material left uses the wall's initial rear face.
-// Informational only (not part of the verdict): detached spall, i.e. rear-wall material
-// beyond that surface by more than two spacings, moving outward.
+// Informational only (not part of the verdict):
+//  * detached spall, i.e. rear-wall material beyond that surface by more than two spacings,
+//    moving outward;
+//  * the open columns: radial bins (one spacing wide, by reference radius) in which every
+//    wall item across the thickness has failed, a hole through the wall in the material frame;
+//  * the perforation's outer radius: the outer edge of the outermost open column, of the
+//    innermost point of a crossing failure path (a crack that leaves no column open), or of
+//    the outermost crossing item, whichever is largest; and whether it lies within
+//    Criteria::axisBandSpacings of the axis (axisymmetric runs). In two-dimensional
+//    axisymmetry material on the axis cannot move off it, so a perforation confined to the
+//    first columns there is a verdict to read with care (docs/metrics.md).
 #pragma once
 
 #include "assess/Criteria.hpp"
@@ -33,6 +42,10 @@ struct RearWallPerforation {
     double crossingMassMg = 0.0;
     std::size_t failedItems = 0;
     bool detachedSpall = false;
+    std::size_t openColumns = 0;      ///< columns failed through the whole thickness
+    double openRadiusMm = 0.0;        ///< outer edge of the outermost open column (0: none)
+    double perforationRadiusMm = 0.0; ///< outer radius of the perforation (0: not perforated)
+    bool axisConfined = false;        ///< perforated, all within the axis band (axisymmetric)
 };
 
 /// Nullopt when the scene has no rear_wall body.

@@ -80,6 +80,8 @@ json verdictJson(const Assessment& a) {
     if (L.rearWall) {
         const BodyLayout& w = L.bodies[*L.rearWall];
         const auto reason = a.runFacts.find("stop_reason");
+        const json perforationRadius =
+            a.rearWallPerforated.value_or(false) ? json(a.perforationRadiusMm) : json(nullptr);
         v["rear_wall"] = {{"body", w.name},
                           {"thickness_mm", w.thickness()},
                           {"perforated", a.rearWallPerforated.value_or(false)},
@@ -87,6 +89,10 @@ json verdictJson(const Assessment& a) {
                           {"through_thickness_failure", a.throughThicknessFailure},
                           {"material_crossed", a.materialCrossed},
                           {"detached_spall", a.detachedSpall},
+                          {"open_columns", a.openColumns},
+                          {"open_radius_mm", a.openRadiusMm},
+                          {"perforation_radius_mm", perforationRadius},
+                          {"axis_confined", a.axisConfined},
                           {"solver_stop_rule_fired", a.hasRunFacts && reason != a.runFacts.end() &&
                                                          *reason == "rear_wall_perforated"}};
     } else {

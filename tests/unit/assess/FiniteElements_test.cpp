@@ -131,6 +131,32 @@ TEST(FiniteElements, ErodedColumnPerforatesTheWall) {
     EXPECT_NEAR(v["penetration_depth_mm"].get<double>(), 6.0 - 0.5, 1e-9);
 }
 
+TEST(FiniteElements, ParticlesOfErodedElementsDoNotCloseTheHole) {
+    // The two axis columns eroded through the thickness and became particles (their reserve
+    // slots alive, with mass, flying ahead of the wall as debris): the wall is open there,
+    // within the axis band (3 x 0.05 mm), P and flagged.
+    SyntheticRun run(feWallScene());
+    run.addSnapshot(1.0);
+    const std::size_t particles = run.initial.z.size();
+    EXPECT_EQ(erodeCore(run, 0.1), 40u);
+    addReserveSlots(run);
+    auto& snap = run.snapshots.back();
+    const auto& elements = run.feSnapshots.back().elements;
+    for (std::size_t e = 0; e < elements.alive.size(); ++e) {
+        if (!elements.alive[e]) {
+            snap.alive[particles + e] = 1;
+            snap.mass[particles + e] = 1.0e-4;
+            snap.z[particles + e] -= 0.5;
+            snap.vz[particles + e] = -0.5;
+        }
+    }
+    const auto a = test::assessSynthetic(run, "fe_axis_column");
+    EXPECT_TRUE(*a.rearWallPerforated);
+    EXPECT_EQ(a.openColumns, 2u);
+    EXPECT_NEAR(a.perforationRadiusMm, 0.1, 1e-9);
+    EXPECT_TRUE(a.axisConfined);
+}
+
 TEST(FiniteElements, PicturesDrawTheMesh) {
     SyntheticRun run(feWallScene());
     run.addSnapshot(1.0);

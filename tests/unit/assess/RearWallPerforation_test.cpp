@@ -230,3 +230,80 @@ TEST(RearWallPerforation, SceneWithoutRearWallHasNoVerdict) {
     EXPECT_TRUE(v["verdict"].is_null());
     EXPECT_TRUE(v["rear_wall_perforated"].is_null());
 }
+
+// The perforation's extent (informational, docs/metrics.md): open columns, its outer radius
+// and whether it lies within the axis band (3 spacings = 0.15 mm here).
+
+TEST(RearWallPerforation, OpenColumnsGiveThePerforationsRadius) {
+    SyntheticRun run(test::whippleScene());
+    failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 < 0.3; });
+    const auto a = assessWall(run, "wall_open_radius");
+    EXPECT_EQ(a.openColumns, 6u);
+    EXPECT_NEAR(a.openRadiusMm, 0.3, 1e-9);
+    EXPECT_NEAR(a.perforationRadiusMm, 0.3, 1e-9);
+    EXPECT_FALSE(a.axisConfined);
+    const auto v = assess::verdictJson(a);
+    EXPECT_EQ(v["rear_wall"]["open_columns"], 6);
+    EXPECT_FALSE(v["rear_wall"]["axis_confined"].get<bool>());
+    for (const auto& w : a.warnings) {
+        EXPECT_EQ(w.find("of the axis"), std::string::npos) << w;
+    }
+}
+
+TEST(RearWallPerforation, PerforationWithinTheAxisBandIsFlaggedNotOverruled) {
+    // Two columns at the axis failed through the thickness: still P, flagged.
+    SyntheticRun run(test::whippleScene());
+    failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 < 0.1; });
+    const auto a = assessWall(run, "wall_axis_only");
+    EXPECT_TRUE(*a.rearWallPerforated);
+    EXPECT_EQ(a.openColumns, 2u);
+    EXPECT_NEAR(a.perforationRadiusMm, 0.1, 1e-9);
+    EXPECT_TRUE(a.axisConfined);
+    const auto v = assess::verdictJson(a);
+    EXPECT_EQ(v["verdict"], "P");
+    EXPECT_TRUE(v["rear_wall"]["axis_confined"].get<bool>());
+    bool warned = false;
+    for (const auto& w : a.warnings) {
+        warned |= w.find("only within 0.1 mm of the axis") != std::string::npos;
+    }
+    EXPECT_TRUE(warned);
+}
+
+TEST(RearWallPerforation, ARingCrackAwayFromTheAxisIsNotConfinedToIt) {
+    SyntheticRun run(test::whippleScene());
+    failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 > 1.0 && r0 < 1.1; });
+    const auto a = assessWall(run, "wall_ring");
+    EXPECT_TRUE(*a.rearWallPerforated);
+    EXPECT_EQ(a.openColumns, 2u);
+    EXPECT_NEAR(a.openRadiusMm, 1.1, 1e-9);
+    EXPECT_FALSE(a.axisConfined);
+}
+
+TEST(RearWallPerforation, CrossingMaterialSetsTheRadiusWithoutAnOpenColumn) {
+    // Debris out to r = 0.475 behind an intact wall: radius 0.475 + half a spacing.
+    SyntheticRun run(test::whippleScene());
+    placeDebris(run, run.addSnapshot(1.0), 10, 6.3, 1.0);
+    const auto a = assessWall(run, "wall_crossed_radius");
+    EXPECT_EQ(a.openColumns, 0u);
+    EXPECT_NEAR(a.perforationRadiusMm, 0.5, 1e-9);
+    EXPECT_FALSE(a.axisConfined);
+}
+
+TEST(RearWallPerforation, AHoleThatWidensLaterIsNotConfinedToTheAxis) {
+    SyntheticRun run(test::whippleScene());
+    failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 < 0.1; });
+    failWall(run, run.addSnapshot(1.5), [](double, double r0) { return r0 < 0.5; });
+    const auto a = assessWall(run, "wall_widens");
+    EXPECT_EQ(a.openColumns, 10u);
+    EXPECT_NEAR(a.perforationRadiusMm, 0.5, 1e-9);
+    EXPECT_FALSE(a.axisConfined);
+}
+
+TEST(RearWallPerforation, NoPerforationHasNoRadius) {
+    SyntheticRun run(test::whippleScene());
+    failWall(run, run.addSnapshot(1.0), [](double z0, double r0) { return r0 < 1.0 && z0 < 5.5; });
+    const auto a = assessWall(run, "wall_no_radius");
+    EXPECT_EQ(a.openColumns, 0u);
+    EXPECT_FALSE(a.axisConfined);
+    EXPECT_TRUE(assess::verdictJson(a)["rear_wall"]["perforation_radius_mm"].is_null());
+}
