@@ -7,6 +7,7 @@
 #include <cmath>
 #include <exception>
 #include <gmsh.h>
+#include <omp.h>
 #include <stdexcept>
 #include <system_error>
 
@@ -29,10 +30,13 @@ constexpr int kQuad4 = 3;
 
 std::atomic<bool> g_sessionOpen{false};
 
-/// One gmsh session: initialised quietly, always finalised.
+/// One gmsh session: initialised quietly, always finalised, and the caller's OpenMP thread
+/// count restored. gmsh sets the OpenMP thread count to its General.NumThreads (1 by
+/// default) for the whole process; left so, every scene with an FE body ran its simulation
+/// on one thread whatever --threads asked for.
 class GmshSession {
 public:
-    GmshSession() {
+    GmshSession() : m_threads(omp_get_max_threads()) {
         if (g_sessionOpen.exchange(true)) {
             throw std::logic_error("GmshMesher: a gmsh session is already open");
         }
@@ -51,10 +55,14 @@ public:
         } catch (...) {
             // finalize only frees memory; nothing a caller could do about a failure here
         }
+        omp_set_num_threads(m_threads);
         g_sessionOpen = false;
     }
     GmshSession(const GmshSession&) = delete;
     GmshSession& operator=(const GmshSession&) = delete;
+
+private:
+    int m_threads;
 };
 
 void checkRectangle(const MeshRectangle& rect) {

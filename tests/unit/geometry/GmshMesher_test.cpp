@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <stdexcept>
 #include <string>
 
@@ -69,6 +70,17 @@ TEST(GmshMesher, AnnulusAwayFromTheAxis) {
     const std::vector<MeshRectangle> rects = {{"ring", 1.27, 6.27, 2.35585, 2.40665, 0.02}};
     const auto path = hvi::test::tempPath("GmshMesher_ring.msh");
     EXPECT_EQ(GmshMesher::write(rects, path).elements, 750u);
+}
+
+TEST(GmshMesher, LeavesTheOpenMpThreadCountAsItFoundIt) {
+    // gmsh sets the OpenMP thread count to its General.NumThreads (1 by default) when it
+    // meshes; every scene with an FE body then ran its whole simulation on one thread.
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(3);
+    const std::vector<MeshRectangle> rects = {{"plate", 0.0, 0.2, 0.0, 1.0, 0.05}};
+    GmshMesher::write(rects, hvi::test::tempPath("GmshMesher_threads.msh"));
+    EXPECT_EQ(omp_get_max_threads(), 3);
+    omp_set_num_threads(before);
 }
 
 TEST(GmshMesher, BadRequestsWriteNothing) {
