@@ -55,6 +55,14 @@ assess::Assessment assessWall(const SyntheticRun& run, const std::string& name) 
     return a;
 }
 
+/// The perforation's extent: open columns, outer radius [mm], confined to the axis band.
+void expectExtent(const assess::Assessment& a, std::size_t openColumns, double radiusMm,
+                  bool axisConfined) {
+    EXPECT_EQ(a.openColumns, openColumns);
+    EXPECT_NEAR(a.perforationRadiusMm, radiusMm, 1e-9);
+    EXPECT_EQ(a.axisConfined, axisConfined);
+}
+
 } // namespace
 
 TEST(RearWallPerforation, IntactWallWithDebrisInFrontIsNotPerforated) {
@@ -238,10 +246,8 @@ TEST(RearWallPerforation, OpenColumnsGiveThePerforationsRadius) {
     SyntheticRun run(test::whippleScene());
     failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 < 0.3; });
     const auto a = assessWall(run, "wall_open_radius");
-    EXPECT_EQ(a.openColumns, 6u);
+    expectExtent(a, 6, 0.3, false);
     EXPECT_NEAR(a.openRadiusMm, 0.3, 1e-9);
-    EXPECT_NEAR(a.perforationRadiusMm, 0.3, 1e-9);
-    EXPECT_FALSE(a.axisConfined);
     const auto v = assess::verdictJson(a);
     EXPECT_EQ(v["rear_wall"]["open_columns"], 6);
     EXPECT_FALSE(v["rear_wall"]["axis_confined"].get<bool>());
@@ -256,9 +262,7 @@ TEST(RearWallPerforation, PerforationWithinTheAxisBandIsFlaggedNotOverruled) {
     failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 < 0.1; });
     const auto a = assessWall(run, "wall_axis_only");
     EXPECT_TRUE(*a.rearWallPerforated);
-    EXPECT_EQ(a.openColumns, 2u);
-    EXPECT_NEAR(a.perforationRadiusMm, 0.1, 1e-9);
-    EXPECT_TRUE(a.axisConfined);
+    expectExtent(a, 2, 0.1, true);
     const auto v = assess::verdictJson(a);
     EXPECT_EQ(v["verdict"], "P");
     EXPECT_TRUE(v["rear_wall"]["axis_confined"].get<bool>());
@@ -274,36 +278,27 @@ TEST(RearWallPerforation, ARingCrackAwayFromTheAxisIsNotConfinedToIt) {
     failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 > 1.0 && r0 < 1.1; });
     const auto a = assessWall(run, "wall_ring");
     EXPECT_TRUE(*a.rearWallPerforated);
-    EXPECT_EQ(a.openColumns, 2u);
-    EXPECT_NEAR(a.openRadiusMm, 1.1, 1e-9);
-    EXPECT_FALSE(a.axisConfined);
+    expectExtent(a, 2, 1.1, false);
 }
 
 TEST(RearWallPerforation, CrossingMaterialSetsTheRadiusWithoutAnOpenColumn) {
     // Debris out to r = 0.475 behind an intact wall: radius 0.475 + half a spacing.
     SyntheticRun run(test::whippleScene());
     placeDebris(run, run.addSnapshot(1.0), 10, 6.3, 1.0);
-    const auto a = assessWall(run, "wall_crossed_radius");
-    EXPECT_EQ(a.openColumns, 0u);
-    EXPECT_NEAR(a.perforationRadiusMm, 0.5, 1e-9);
-    EXPECT_FALSE(a.axisConfined);
+    expectExtent(assessWall(run, "wall_crossed_radius"), 0, 0.5, false);
 }
 
 TEST(RearWallPerforation, AHoleThatWidensLaterIsNotConfinedToTheAxis) {
     SyntheticRun run(test::whippleScene());
     failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 < 0.1; });
     failWall(run, run.addSnapshot(1.5), [](double, double r0) { return r0 < 0.5; });
-    const auto a = assessWall(run, "wall_widens");
-    EXPECT_EQ(a.openColumns, 10u);
-    EXPECT_NEAR(a.perforationRadiusMm, 0.5, 1e-9);
-    EXPECT_FALSE(a.axisConfined);
+    expectExtent(assessWall(run, "wall_widens"), 10, 0.5, false);
 }
 
 TEST(RearWallPerforation, NoPerforationHasNoRadius) {
     SyntheticRun run(test::whippleScene());
     failWall(run, run.addSnapshot(1.0), [](double z0, double r0) { return r0 < 1.0 && z0 < 5.5; });
     const auto a = assessWall(run, "wall_no_radius");
-    EXPECT_EQ(a.openColumns, 0u);
-    EXPECT_FALSE(a.axisConfined);
+    expectExtent(a, 0, 0.0, false);
     EXPECT_TRUE(assess::verdictJson(a)["rear_wall"]["perforation_radius_mm"].is_null());
 }
