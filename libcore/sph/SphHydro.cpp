@@ -1,6 +1,6 @@
 #include "sph/SphHydro.hpp"
-#include "core/Parallel.hpp"
 
+#include "core/Parallel.hpp"
 #include "core/Units.hpp"
 
 #include <algorithm>
@@ -27,7 +27,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
     const bool strength = ps.hasStrength();
     const double alpha = opt.avAlpha, beta = opt.avBeta, eta2 = opt.avEta2;
     const double invShapeAtSpacing = 1.0 / Shape::shape(opt.spacingOverH);
-    const double invPi = 1.0 / units::kPi;
+    const double inv2Pi = 0.5 / units::kPi;
     const std::size_t activeCount = list.active.size();
     const auto* src = list.source.data();
     const auto* sgn = list.sign.data();
@@ -61,9 +61,8 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             double az = 0.0, ar = 0.0, de = 0.0;
             double lzz = 0.0, lzr = 0.0, lrz = 0.0, lrr = 0.0;
             double mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0;
-            double gr = 0.0; // radial part of g = (2/rho) sum (w - A) grad W ~ e_r / r
-            double viscHoop = 0.0; // sum (w - A) Pi grad_r W: the viscous pressure's hoop part
-            double gradientExcess = 0.0; // sum (w - A) (B_j - B_i)_r . grad W (see below)
+            double gr = 0.0;       // radial part of g = (2/rho) sum (w_pair - A) grad W ~ e_r / r
+            double viscHoop = 0.0; // sum (w_pair - A) Pi grad_r W: the viscous hoop part
             double maxMu = 0.0;
             // Pass 1: keep the listed candidates inside the support (the list reaches a Verlet
             // skin further). Branch-free, order-preserving compaction.
@@ -79,7 +78,11 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 inside[count] = j;
                 count += (dz * dz + dr * dr < support * support) ? 1 : 0;
             }
-            // Pass 2: the pair terms.
+            // Pass 2: the pair terms. Each particle's own stress acts over its own
+            // circumference and the neighbour's over the neighbour's: the pair force
+            // m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) . grad W is antisymmetric (z-momentum is
+            // exact) and its axial part is the area-weighted, consistent one even at the axis.
+            const double ownPerMass = axi ? inv2Pi / ri : 1.0; // w_own = m_j / (2 pi r_i)
             for (std::size_t k = 0; k < count; ++k) {
                 const int32_t j = inside[k];
                 const int32_t s = src[j];
@@ -96,9 +99,9 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 const double gor = Shape::kNorm * Shape::shapeDerivOverQ(q) * invH2 * invH2;
                 const double wz = gor * dz, wr = gor * dr; // grad_i W_ij
                 const double mj = dj.mass;
-                const double rj = dj.r;
-                const double areaMass = dj.areaMass;
-                const double w = axi ? mj * invPi / (ri + rj) : mj;
+                const double areaMass = dj.areaMass;          // m_j / (2 pi r_j)
+                const double wOwn = mj * ownPerMass;          // m_j / (2 pi r_i)
+                const double wPair = 0.5 * (wOwn + areaMass); // the symmetric viscous weight
                 const double vzj = dj.vz, vrj = sg * dj.vr;
                 const double dvz = vzi - vzj, dvr = vri - vrj;
                 // Artificial viscosity for approaching pairs.
@@ -111,25 +114,25 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                     visc = (-alpha * cbar * mu + beta * mu * mu) / rhobar;
                     maxMu = std::max(maxMu, -mu);
                 }
-                double tzz = bzzi + dj.bzz - visc;
-                double trr = brri + dj.brr - visc;
-                double trz = brzi + sg * dj.brz;
-                // Particle i's own share of the pair's work (the compatible energy split).
-                double ozz = bzzi - 0.5 * visc, orr = brri - 0.5 * visc, orz = brzi;
+                double ozz = bzzi, orr = brri, orz = brzi;            // own
+                double nzz = dj.bzz, nrr = dj.brr, nrz = sg * dj.brz; // neighbour's
                 if constexpr (kArtificialStress) {
                     const double f = Shape::shape(q) * invShapeAtSpacing;
                     const double f2 = f * f;
                     const double fn = f2 * f2; // n = 4 (Gray, Monaghan & Swift 2001)
-                    tzz += fn * (azzi + dj.azz);
-                    trr += fn * (arri + dj.arr);
-                    trz += fn * (arzi + sg * dj.arz);
                     ozz += fn * azzi;
                     orr += fn * arri;
                     orz += fn * arzi;
+                    nzz += fn * dj.azz;
+                    nrr += fn * dj.arr;
+                    nrz += fn * sg * dj.arz;
                 }
-                az += w * (tzz * wz + trz * wr);
-                ar += w * (trz * wz + trr * wr);
-                de -= w * (dvz * (ozz * wz + orz * wr) + dvr * (orz * wz + orr * wr));
+                const double ownZ = ozz * wz + orz * wr, ownR = orz * wz + orr * wr;
+                az += wOwn * ownZ + areaMass * (nzz * wz + nrz * wr) - wPair * visc * wz;
+                ar += wOwn * ownR + areaMass * (nrz * wz + nrr * wr) - wPair * visc * wr;
+                // Particle i's share of the pair's work (the compatible energy split): its own
+                // stress's, and half the viscous work.
+                de -= wOwn * (dvz * ownZ + dvr * ownR) - wPair * 0.5 * visc * (dvz * wz + dvr * wr);
                 // Velocity gradient and its linear correction matrix.
                 const double vol = dj.volume;
                 lzz -= vol * dvz * wz;
@@ -141,20 +144,16 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 mrz -= vol * dr * wz;
                 mrr -= vol * dr * wr;
                 if (axi) {
-                    const double weightExcess = w - areaMass;
-                    const double excess = weightExcess * wr;
+                    const double excess = (wPair - areaMass) * wr;
                     gr += excess;
                     viscHoop += excess * visc;
-                    gradientExcess +=
-                        weightExcess * ((sg * dj.brz - brzi) * wz + (dj.brr - brri) * wr);
                 }
             }
             // Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
             // otherwise the raw estimate (an isolated particle or a lone pair).
             const double det = mzz * mrr - mzr * mrz;
             if (std::fabs(det) > 0.01) {
-                const double izz = mrr / det, izr = -mzr / det, irz = -mrz / det,
-                             irr = mzz / det;
+                const double izz = mrr / det, izr = -mzr / det, irz = -mrz / det, irr = mzz / det;
                 const double czz = lzz * izz + lzr * irz, czr = lzz * izr + lzr * irr;
                 const double crz = lrz * izz + lrr * irz, crr = lrz * izr + lrr * irr;
                 lzz = czz;
@@ -177,12 +176,12 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 // would break the pairwise cancellation that conserves z-momentum, and no
                 // antisymmetric pair term can stand in for it (docs/formulation.md).
                 const double hoopR = -(sigmaThTh / rhoi) * grr;
-                // The viscous stress's hoop part. The radius-weighted pair sum gives the
+                // The viscous stress's hoop part. The pair-weighted viscous sum gives the
                 // in-plane viscous stress its cylindrical divergence term sigma_rr^v / r, which
                 // only a hoop stress sigma_thth^v can balance. The pair viscosity has a
                 // sigma_rr^v even where nothing is compressed radially (the diagonal pairs of a
                 // compression along z); r and theta are then both transverse and equivalent,
-                // so sigma_thth^v = sigma_rr^v, which sum (w - A) Pi grad_r W adds exactly.
+                // so sigma_thth^v = sigma_rr^v, which sum (w_pair - A) Pi grad_r W adds exactly.
                 // Without it a plate's impact shock pulled particles towards the axis with a
                 // force growing as 1/r and held the first particle column on the axis
                 // (tests/unit/sph/AxisForces_test.cpp). Where the flow is compressed
@@ -194,17 +193,12 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 const double compressMax = std::max(compressZ, compressR);
                 const double hoopShare = compressMax > 0.0 ? 1.0 - compressR / compressMax : 1.0;
                 const double hoopViscR = hoopShare * viscHoop;
-                // The radius-weighted pair sum is the area-weighted divergence plus
-                // sum (w - A)(B_i + B_j).grad W; of the latter only the particle's own part,
-                // 2 B_i sum (w - A) grad W = (sigma_i . g) / rho_i ~ sigma_rr / (rho r), belongs to
-                // the cylindrical divergence. The rest, sum (w - A)(B_j - B_i).grad W, is
-                // (1/2r) times a second moment of the stress differences: zero for a linear
-                // field, but at a shock travelling along z it is a radial force growing as 1/r
-                // (a plate impact in RZ drove the first particle columns radially at up to a
-                // tenth of the particle velocity). It is taken out of the radial force.
-                const double stressExcessR = -gradientExcess;
-                ar += hoopR + hoopViscR + stressExcessR;
-                de -= vri * (hoopR + hoopViscR + stressExcessR);
+                // The own-stress part of the pair sum, B_i . sum (w_own - A) grad W = B_i . (rho g)
+                // with g ~ e_r / r, is the cylindrical divergence's sigma_rr / (rho r) and
+                // sigma_rz / (rho r); the neighbours' part is area-weighted, so no second
+                // moment of the stress differences enters the force (docs/formulation.md).
+                ar += hoopR + hoopViscR;
+                de -= vri * (hoopR + hoopViscR);
             }
             rates.az[i] += az;
             rates.ar[i] += ar;

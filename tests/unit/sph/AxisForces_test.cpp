@@ -3,13 +3,15 @@
 // gradient, so no particle may be pushed radially, however close to the axis.
 //
 // Two terms broke this and are tested here. (1) Monaghan's Pi_ij acts as a viscous pressure;
-// the radius-weighted pair sum gives it the in-plane divergence term -(q/r) e_r, which only a
-// hoop part cancels. Without it a uniaxial compression pulled every particle towards the axis
+// the pair-weighted sum gives it the in-plane divergence term -(q/r) e_r, which only a hoop
+// part cancels. Without it a uniaxial compression pulled every particle towards the axis
 // with a force growing as 1/r (-0.058/r km/s/us on the lattice below; -0.67 km/s/us on the
-// first column). (2) The radius-weighted pair sum of the stresses carries, besides the
-// cylindrical sigma_rr/r, the term sum (w - A)(B_j - B_i).grad W: zero for a linear field, but
-// a radial force growing as 1/r at a pressure pulse travelling along z (up to 4.3 km/s/us on
-// the second column for the pulse below, an eighth of the pulse's axial force).
+// first column). (2) The former radius-weighted pair sum of the stresses, weight
+// m_j / (pi (r_i + r_j)) on B_i + B_j, carried besides the cylindrical sigma_rr/r the term
+// sum (w - A)(B_j - B_i).grad W: zero for a linear field, but a radial force growing as 1/r
+// at a pressure pulse travelling along z (up to 4.3 km/s/us on the second column for the
+// pulse below). The present split (B_i over the own circumference, B_j over the neighbour's)
+// has no such term; the test keeps it from coming back.
 //
 // Exact answer: on a uniform lattice with its mirror images, the area-weighted sums of any
 // field that depends on z only, or of a pair quantity that depends only on the pair's offset,
@@ -114,14 +116,13 @@ TEST(AxisForces, PressurePulseAlongZHasNoRadialForce) {
 }
 
 TEST(AxisForces, CompatibleEnergyStaysExact) {
-    // The radial corrections' work is booked on the particle they act on, so kinetic plus
-    // internal energy rates still cancel over the set. The radial velocity follows the pulse,
-    // v_r = r g(z) with g the pulse's shape: the stress-gradient correction goes as the
-    // pulse's second derivative, so with a radial velocity uniform in z (v_r = r) its work
-    // sums to zero over the rows (the integral of a second derivative) and the check could
-    // not see it unbooked; against g(z) it sums to minus the integral of g'^2. Measured:
-    // leaving the stress-gradient correction's work unbooked gives -1.0e-2 of the scale, the
-    // viscous hoop part's +1.1e-2; booked, round-off.
+    // The hoop terms' work is booked on the particle they act on, and each particle takes its
+    // own stress's share of the pair work (weight m_j / (2 pi r_i)), so kinetic plus internal
+    // energy rates cancel over the set. The radial velocity follows the pulse, v_r = r g(z)
+    // with g the pulse's shape, so the radial terms do work that does not sum away over the
+    // rows. Measured by breaking the code: the own share weighted like the viscosity
+    // (m_j (1/r_i + 1/r_j) / 4 pi) gives -1.0e-2 of the scale, the hoop force's work unbooked
+    // +0.17; booked, round-off.
     const double zMid = 0.5 * kRows * kSpacing;
     auto shape = [zMid](double z) { return std::exp(-std::pow((z - zMid) / 0.06, 2)); };
     ParticleSet ps = lattice(2.0, 0.0, [&](double z) { return 10.0 * shape(z); });
