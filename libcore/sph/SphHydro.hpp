@@ -3,27 +3,27 @@
 //
 // Formulation (docs/formulation.md derives every term):
 //   axisymmetric (z, r), each particle a ring of true mass m, area mass A = m / (2 pi r):
-//     dv_i/dt = sum_j w_ij (B_i + B_j - Pi_ij I) . grad W_ij  +  hoop_i
-//     w_ij    = m_j / (2 pi rbar_ij),  rbar_ij = (r_i + r_j) / 2     (symmetric in i, j)
+//     dv_i/dt = sum_j [w_own,ij B_i + A_j B_j - w_pair,ij Pi_ij I] . grad W_ij  +  hoop_i
+//     w_own,ij = m_j / (2 pi r_i),  w_pair,ij = (w_own,ij + A_j) / 2
 //     B       = sigma / rho^2,  sigma = S - p I  (in-plane components)
 //     hoop_i  = [-(sigma_thth,i / rho_i) g_r,i
-//                + phi_i sum_j (w_ij - A_j) Pi_ij dW_ij/dr_i          (viscous hoop part)
-//                - sum_j (w_ij - A_j) (B_j - B_i)_r . grad W_ij] e_r  (second-moment excess)
-//     g_i     = (2 / rho_i) sum_j (w_ij - A_j) grad W_ij  ~ e_r / r
+//                + phi_i sum_j (w_pair,ij - A_j) Pi_ij dW_ij/dr_i] e_r  (viscous hoop part)
+//     g_i     = (2 / rho_i) sum_j (w_pair,ij - A_j) grad W_ij  ~ e_r / r
 //     phi_i   = 1 - c_r / max(c_z, c_r),  c_a = max(-L_aa, 0)  (radial share of compression)
-//   Because w_ij m_i = w_ji m_j, pair forces are antisymmetric: total z-momentum is
-//   conserved to round-off. The choice rbar = (r_i + r_j)/2 instead of Spheral's r_j (Owen's
-//   area-weighted RZ SPH, Spheral src/SPH/SolidSPHRZ.cc) adds sigma . e_r / (rho r) to the pair
-//   term; hoop_i adds -sigma_thth e_r / (rho r); together they are the cylindrical divergence
-//   terms of Petschek & Libersky (1993, JCP 109:76). Using the same discrete g in both makes
-//   a uniform pressure exert exactly no radial force. The two further radial terms make a
-//   field varying along z only, or a linear velocity field, exert none either (the radial
-//   force becomes the area-weighted divergence plus the cylindrical 1/r terms; see
-//   docs/formulation.md and tests/unit/sph/AxisForces_test.cpp).
+//   Each stress acts over its own particle's circumference (Brookshaw 2003; Garcia-Senz,
+//   Relano, Cabezon & Bravo 2009, MNRAS 392:346; Spheral src/SPH/SPHHydroBaseGSRZ.cc): the
+//   pair force m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) . grad W is antisymmetric, so total
+//   z-momentum is conserved to round-off, and the neighbours' part is the area-weighted
+//   (planar) divergence, consistent up to the axis. The own part adds B_i . (rho_i g_i), the
+//   sigma_rr / (rho r) and sigma_rz / (rho r) of the cylindrical divergence; hoop_i adds
+//   -sigma_thth / (rho r) (Petschek & Libersky 1993, JCP 109:76). Using the same discrete g
+//   in both makes a uniform pressure exert exactly no radial force, and a field varying
+//   along z only, or a linear velocity field, none either (docs/formulation.md,
+//   tests/unit/sph/AxisForces_test.cpp).
 //   The energy equation is the compatible one (Owen 2004-style pairwise work split), so total
 //   energy is conserved by the semi-discrete equations:
-//     de_i/dt = -sum_j w_ij v_ij . (B_i - Pi_ij/2 I) . grad W_ij  -  v_r,i hoop_i
-//   Planar mode: w_ij = A_j = m_j (mass per unit depth), no hoop term.
+//     de_i/dt = -sum_j v_ij . (w_own,ij B_i - w_pair,ij Pi_ij/2 I) . grad W_ij  -  v_r,i hoop_i
+//   Planar mode: w_own = w_pair = A_j = m_j (mass per unit depth), no hoop term.
 // Artificial viscosity: Monaghan & Gingold (1983), Monaghan (1992) eq. 4.1:
 //   Pi_ij = (-alpha cbar mu + beta mu^2) / rhobar for approaching pairs,
 //   mu = hbar v_ij.x_ij / (|x_ij|^2 + eta^2 hbar^2).

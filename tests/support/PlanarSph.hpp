@@ -30,7 +30,7 @@ inline sph::SphHydro evaluatePlanar(const sph::ParticleSet& ps, sph::HydroOption
     return evaluateIn(false, ps, hydro, rates);
 }
 
-/// Axisymmetric: mirror ghosts across r = 0, radius-weighted pair terms and the hoop terms.
+/// Axisymmetric: mirror ghosts across r = 0, the circumference-weighted pair terms and the hoop terms.
 inline sph::SphHydro evaluateAxisymmetric(const sph::ParticleSet& ps, sph::HydroOptions hydro,
                                           sph::ParticleRates& rates) {
     return evaluateIn(true, ps, hydro, rates);
