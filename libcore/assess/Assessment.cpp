@@ -132,6 +132,7 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
         }
     }
 
+    bool confinedWhenPerforated = true; // every perforated snapshot within the axis band
     for (const auto& info : a.snapshots) {
         io::Snapshot snap =
             info.index == a.first.info.index ? a.first : reader.readSnapshot(info.index);
@@ -168,10 +169,9 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
             a.openColumns = std::max(a.openColumns, m.rearWall->openColumns);
             a.openRadiusMm = std::max(a.openRadiusMm, m.rearWall->openRadiusMm);
             if (m.rearWall->perforated) {
-                const bool firstPerforated = a.perforationTimeUs == m.timeUs;
                 a.perforationRadiusMm =
                     std::max(a.perforationRadiusMm, m.rearWall->perforationRadiusMm);
-                a.axisConfined = (firstPerforated || a.axisConfined) && m.rearWall->axisConfined;
+                confinedWhenPerforated &= m.rearWall->axisConfined;
             }
         }
         if (m.penetration) {
@@ -224,6 +224,7 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
             a.kept.push_back(std::move(snap));
         }
     }
+    a.axisConfined = a.rearWallPerforated.value_or(false) && confinedWhenPerforated;
     std::sort(a.reachedBodies.begin(), a.reachedBodies.end());
     std::sort(a.perforatedLayers.begin(), a.perforatedLayers.end());
 

@@ -56,4 +56,13 @@ inline bool belongsTo(const MaterialItems& items, std::size_t i, std::size_t b) 
     return items.body[i] >= 0 && static_cast<std::size_t>(items.body[i]) == b;
 }
 
+/// Whether items[i] is body `b`'s own material in the material frame: for an FE body its
+/// elements only. The particles its eroded elements became carry the element's reference
+/// position but are debris now; counted as the body's material they would close the very hole
+/// their elements left.
+inline bool isBodyMaterial(const MaterialItems& items, std::size_t i, const ShieldLayout& layout,
+                           std::size_t b) {
+    return belongsTo(items, i, b) && (!layout.bodies[b].fe || items.isElement(i));
+}
+
 } // namespace hvi::assess

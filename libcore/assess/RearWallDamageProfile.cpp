@@ -21,7 +21,7 @@ std::optional<RearWallDamageProfile> rearWallDamageProfile(const MaterialItems& 
     const auto n = static_cast<std::size_t>(count);
     std::vector<double> mass(n, 0.0), failed(n, 0.0), damage(n, 0.0);
     for (std::size_t i = 0; i < items.size(); ++i) {
-        if (!belongsTo(items, i, wall)) {
+        if (!isBodyMaterial(items, i, layout, wall)) {
             continue;
         }
         const long k = static_cast<long>(std::floor((items.r0[i] - body.rMin) / w));

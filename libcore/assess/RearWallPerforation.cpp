@@ -111,11 +111,10 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
         result.crossingItems >= static_cast<std::size_t>(std::max(1, criteria.minCrossingItems));
     result.perforated = result.throughThicknessFailure || result.materialCrossed;
 
-    // Open columns, in the material frame: every wall item of the bin failed. For an FE wall
-    // the items are its elements; the particles its eroded elements became are debris.
+    // Open columns, in the material frame: every item of the wall's material in the bin failed.
     std::vector<std::size_t> itemsIn(n, 0), failedIn(n, 0);
     for (std::size_t i = 0; i < items.size(); ++i) {
-        if (!belongsTo(items, i, wall) || (body.fe && !items.isElement(i))) {
+        if (!isBodyMaterial(items, i, layout, wall)) {
             continue;
         }
         const long k = binOf(items.r0[i]);

@@ -512,8 +512,8 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         // specific energy, as the two sides of a symmetric impact of like materials do
         // (u_p^2 / 2 each). A free node is eroded material: its share joins the eroded
         // energy ledger (freeNodeHeat()), as its internal energy did when it eroded.
-        const bool wasInContact = previous[k] != 0;
-        if (!con.kicked || !(!wasInContact || isParticle || con.target < 0)) {
+        const bool collision = previous[k] == 0 || isParticle || con.target < 0;
+        if (!con.kicked || !collision) {
             continue;
         }
         const double heat = -con.energy;

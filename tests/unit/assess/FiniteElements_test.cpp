@@ -3,7 +3,9 @@
 // eroded column of elements perforates the wall, the counts report nodes and elements, and
 // the pictures draw the quads.
 #include "AssessScenes.hpp"
+#include "assess/MaterialItems.hpp"
 #include "assess/Pictures.hpp"
+#include "assess/RearWallDamageProfile.hpp"
 #include "assess/Verdict.hpp"
 
 #include <filesystem>
@@ -150,11 +152,22 @@ TEST(FiniteElements, ParticlesOfErodedElementsDoNotCloseTheHole) {
             snap.vz[particles + e] = -0.5;
         }
     }
-    const auto a = test::assessSynthetic(run, "fe_axis_column");
+    assess::AssessOptions options;
+    options.keepSnapshots = {1};
+    const auto a = test::assessSynthetic(run, "fe_axis_column", options);
     EXPECT_TRUE(*a.rearWallPerforated);
     EXPECT_EQ(a.openColumns, 2u);
     EXPECT_NEAR(a.perforationRadiusMm, 0.1, 1e-9);
     EXPECT_TRUE(a.axisConfined);
+    // The damage profile (the pictures' curve) sees the same hole: those two columns failed
+    // through their whole thickness, the next one intact.
+    ASSERT_EQ(a.kept.size(), 1u);
+    const auto profile = assess::rearWallDamageProfile(assess::materialItems(a.kept[0], a.first),
+                                                       a.layout, a.criteria);
+    ASSERT_TRUE(profile);
+    EXPECT_DOUBLE_EQ(profile->failedFraction[0], 1.0);
+    EXPECT_DOUBLE_EQ(profile->failedFraction[1], 1.0);
+    EXPECT_DOUBLE_EQ(profile->failedFraction[2], 0.0);
 }
 
 TEST(FiniteElements, PicturesDrawTheMesh) {
