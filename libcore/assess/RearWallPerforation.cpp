@@ -27,9 +27,11 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
 
     // The current rear surface per radial bin: the top of the wall's contiguous material in
     // the bin (failed or not, gaps no wider than the link distance), counted from the
-    // rearmost item that has not failed, or from the item nearest the wall's mid-plane where
-    // all have. Failed wall material still in place is wall; a fragment that has left it
-    // (detached spall, front-face ejecta) is not.
+    // rearmost item of the wall's own material (an FE wall's elements) that has not failed,
+    // or from the item nearest the wall's mid-plane where all have. Failed wall material
+    // still in place is wall, and so are the particles of eroded elements that stay in
+    // contact with it; a fragment that has left it (detached spall, front-face ejecta, the
+    // particles of eroded elements flying off, however sound) is not.
     const double s = body.spacing;
     const double link = criteria.linkSpacings * s;
     const double extent = body.rMax - body.rMin;
@@ -51,7 +53,7 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
         }
         const auto kk = static_cast<std::size_t>(k);
         wallZ[kk].push_back(items.z[i]);
-        if (!isFailed(items, i, layout, criteria)) {
+        if (isBodyMaterial(items, i, layout, wall) && !isFailed(items, i, layout, criteria)) {
             topSound[kk] = std::max(topSound[kk], items.z[i]);
         }
     }

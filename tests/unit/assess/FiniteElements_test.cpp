@@ -170,6 +170,48 @@ TEST(FiniteElements, ParticlesOfErodedElementsDoNotCloseTheHole) {
     EXPECT_DOUBLE_EQ(profile->failedFraction[2], 0.0);
 }
 
+TEST(FiniteElements, FlyingParticlesOfErodedElementsDoNotMoveTheRearSurface) {
+    // The wall's rear row within r < 0.5 eroded and its particles flew 1.5 mm off the rear
+    // face, undamaged and dense; ten projectile particles followed them 0.3 mm past the rear
+    // face, moving outward. The rear surface is where the wall's elements end, not where the
+    // flying particles are: the debris has crossed the wall (criterion b) and the particles
+    // are reported as detached.
+    SyntheticRun run(feWallScene());
+    run.addSnapshot(1.0);
+    const std::size_t particles = run.initial.z.size();
+    addReserveSlots(run);
+    auto& snap = run.snapshots.back();
+    auto& elements = run.feSnapshots.back().elements;
+    std::size_t flying = 0;
+    for (std::size_t e = 0; e < elements.alive.size(); ++e) {
+        const std::size_t slot = particles + e;
+        if (run.initial.r[slot] < 0.5 && run.initial.z[slot] > 5.95) {
+            elements.alive[e] = 0;
+            snap.alive[slot] = 1;
+            snap.mass[slot] = 1.0e-4;
+            snap.z[slot] += 1.5;
+            snap.vz[slot] = 0.5;
+            ++flying;
+        }
+    }
+    ASSERT_EQ(flying, 10u);
+    std::size_t placed = 0;
+    run.forBody(snap, "projectile", [&](std::size_t i) {
+        if (placed < 10) {
+            snap.z[i] = 6.3;
+            snap.r[i] = 0.025 + 0.05 * static_cast<double>(placed);
+            snap.vz[i] = 1.0;
+            ++placed;
+        }
+    });
+    const auto a = test::assessSynthetic(run, "fe_flying_eroded");
+    ASSERT_TRUE(a.rearWallPerforated);
+    EXPECT_TRUE(*a.rearWallPerforated);
+    EXPECT_TRUE(a.materialCrossed);
+    EXPECT_FALSE(a.throughThicknessFailure);
+    EXPECT_TRUE(a.detachedSpall);
+}
+
 TEST(FiniteElements, PicturesDrawTheMesh) {
     SyntheticRun run(feWallScene());
     run.addSnapshot(1.0);
