@@ -75,6 +75,10 @@ TEST(HviRunCli, BenchmarkPrintsThroughput) {
                                       "--threads 1");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("particle-steps/s"), std::string::npos) << r.out;
+    // The FE scene reports its element throughput and what an element-step costs against an
+    // active particle-step (issue #5's comparison).
+    EXPECT_NE(r.out.find("element-steps/s"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("an element-step costs"), std::string::npos) << r.out;
 }
 
 TEST(HviRunCli, HelpVersionSchema) {
