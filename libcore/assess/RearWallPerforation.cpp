@@ -143,8 +143,11 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
             outer = std::max(outer, crossingRadius + 0.5 * s);
         }
         result.perforationRadiusMm = outer;
-        result.axisConfined = layout.axisymmetric && body.rMin <= 0.0 &&
-                              outer <= criteria.axisBandSpacings * s * (1.0 + 1e-9);
+        // The band is a number of columns: where the plate's width is not a whole number of
+        // spacings its columns are a little wider (or narrower) than the spacing.
+        const double band = criteria.axisBandSpacings * std::max(s, w);
+        result.axisConfined =
+            layout.axisymmetric && body.rMin <= 0.0 && outer <= band * (1.0 + 1e-9);
     }
     return result;
 }

@@ -273,6 +273,19 @@ TEST(RearWallPerforation, PerforationWithinTheAxisBandIsFlaggedNotOverruled) {
     EXPECT_TRUE(warned);
 }
 
+TEST(RearWallPerforation, TheAxisBandCountsColumnsWhenTheyAreWiderThanTheSpacing) {
+    // A 5.01 mm wide wall holds 100 columns 0.0501 mm wide: its first three, 0.1503 mm, are
+    // the axis band although 3 x 0.05 mm is 0.15 mm (a 40 mm FE wall meshed at 0.03 mm has
+    // such columns).
+    auto doc = test::whippleScene();
+    doc["bodies"][2]["shape"]["outer_radius_mm"] = 5.01;
+    SyntheticRun run(doc);
+    failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 < 0.151; });
+    const auto a = assessWall(run, "wall_wide_columns");
+    EXPECT_TRUE(*a.rearWallPerforated);
+    expectExtent(a, 3, 0.1503, true);
+}
+
 TEST(RearWallPerforation, ARingCrackAwayFromTheAxisIsNotConfinedToIt) {
     SyntheticRun run(test::whippleScene());
     failWall(run, run.addSnapshot(1.0), [](double, double r0) { return r0 > 1.0 && r0 < 1.1; });
