@@ -12,6 +12,20 @@
 
 namespace hvi::test {
 
+/// Places `count` projectile particles at z, spread over r in [0, 0.5), moving at vz.
+inline void placeDebris(const SyntheticRun& run, io::ParticleFields& snap, std::size_t count,
+                        double z, double vz) {
+    std::size_t placed = 0;
+    run.forBody(snap, "projectile", [&](std::size_t i) {
+        if (placed < count) {
+            snap.z[i] = z;
+            snap.r[i] = 0.025 + 0.05 * static_cast<double>(placed % 10);
+            snap.vz[i] = vz;
+            ++placed;
+        }
+    });
+}
+
 /// Projectile (r 0.5 mm), bumper z in [0, 0.5], rear wall z in [5, 6]; plates 5 mm wide.
 inline nlohmann::json whippleScene(double spacing = 0.05) {
     return {{"id", "whipple-test"},

@@ -195,15 +195,7 @@ TEST(FiniteElements, FlyingParticlesOfErodedElementsDoNotMoveTheRearSurface) {
         }
     }
     ASSERT_EQ(flying, 10u);
-    std::size_t placed = 0;
-    run.forBody(snap, "projectile", [&](std::size_t i) {
-        if (placed < 10) {
-            snap.z[i] = 6.3;
-            snap.r[i] = 0.025 + 0.05 * static_cast<double>(placed);
-            snap.vz[i] = 1.0;
-            ++placed;
-        }
-    });
+    test::placeDebris(run, snap, 10, 6.3, 1.0);
     const auto a = test::assessSynthetic(run, "fe_flying_eroded");
     ASSERT_TRUE(a.rearWallPerforated);
     EXPECT_TRUE(*a.rearWallPerforated);

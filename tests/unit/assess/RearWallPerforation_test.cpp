@@ -10,26 +10,13 @@
 #include <gtest/gtest.h>
 
 using namespace hvi;
+using test::placeDebris;
 using test::SyntheticRun;
 
 namespace {
 
 constexpr double kSpacing = 0.05;
 constexpr double kWallFront = 5.0;
-
-/// Places `count` projectile particles at z, spread over r in [0, 0.5), moving at vz.
-void placeDebris(const SyntheticRun& run, io::ParticleFields& snap, std::size_t count, double z,
-                 double vz) {
-    std::size_t placed = 0;
-    run.forBody(snap, "projectile", [&](std::size_t i) {
-        if (placed < count) {
-            snap.z[i] = z;
-            snap.r[i] = 0.025 + 0.05 * static_cast<double>(placed % 10);
-            snap.vz[i] = vz;
-            ++placed;
-        }
-    });
-}
 
 /// Fails the rear-wall particles for which `where(z0, r0)` holds.
 template <class Where>
