@@ -19,7 +19,9 @@ namespace hvi::app {
 using nlohmann::json;
 
 namespace {
-extern "C" void onSignal(int) { solver::g_stopRequested.store(true); }
+extern "C" void onSignal(int) {
+    solver::g_stopRequested.store(true);
+}
 } // namespace
 
 HviRunTool::HviRunTool()
@@ -30,8 +32,9 @@ HviRunTool::HviRunTool()
 void HviRunTool::addOptions(CLI::App& app) {
     app.add_option("scene", m_scene, "Scene JSON (from foam2layers/hcomb2rings or by hand)")
         ->check(CLI::ExistingFile);
-    app.add_option("-o,--output", m_output, "Run file to write (HDF5; default SCENE.h5), with "
-                                            "an XDMF sidecar .xmf for ParaView");
+    app.add_option("-o,--output", m_output,
+                   "Run file to write (HDF5; default SCENE.h5), with "
+                   "an XDMF sidecar .xmf for ParaView");
     app.add_option("--threads", m_threads, "OpenMP threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--resolution-mm", m_resolution,
@@ -56,6 +59,9 @@ void HviRunTool::addOptions(CLI::App& app) {
                  "sphere at 6.847 km/s on 0.8 mm Al; spacing --resolution-mm, default 0.015)");
     app.add_option("--benchmark-steps", m_benchmarkSteps, "Steps timed by --benchmark")
         ->check(CLI::Range(1L, 100000000L));
+    app.add_option("--benchmark-scene", m_benchmarkScene,
+                   "Scenes timed by --benchmark: sph (all-SPH bumper), fe (FE bumper), or both")
+        ->check(CLI::IsMember({"both", "sph", "fe"}));
     app.add_flag("--list-materials", m_listMaterials, "List the built-in materials and exit");
 }
 
@@ -65,6 +71,9 @@ void HviRunTool::benchmark() {
     // Two scenes: the all-SPH bumper case, and the same with the bumper as finite elements
     // (the element throughput; FE time only, contact reported apart).
     for (const bool feBumper : {false, true}) {
+        if (m_benchmarkScene != "both" && (m_benchmarkScene == "fe") != feBumper) {
+            continue;
+        }
         json doc = bumperCaseScene(spacing);
         if (feBumper) {
             doc["bodies"][1]["discretization"] = "fe";
@@ -196,8 +205,8 @@ void HviRunTool::execute() {
     json materials = json::object();
     for (const auto& body : scene.bodies) {
         const auto& spec = library.get(body.material);
-        materials[body.material] = json::parse(spec.definitionJson.empty() ? "{}"
-                                                                           : spec.definitionJson);
+        materials[body.material] =
+            json::parse(spec.definitionJson.empty() ? "{}" : spec.definitionJson);
     }
     const int threads = omp_get_max_threads();
     json prov = provenance(m_scene, scene.resolved);
@@ -231,9 +240,9 @@ void HviRunTool::execute() {
     options.quiet = quiet();
     options.checkpointEverySeconds = m_checkpointEvery;
     options.resume = m_resume;
-    const auto summary = solver::runToCompletion(
-        sim, scene.resolved.dump(), materials.dump(), prov, options,
-        [this](const std::string& line) { info(line); });
+    const auto summary =
+        solver::runToCompletion(sim, scene.resolved.dump(), materials.dump(), prov, options,
+                                [this](const std::string& line) { info(line); });
     char line[256];
     std::snprintf(line, sizeof line,
                   "%s at t = %.4f us after %ld steps; wall %.1f s; %.3e particle-steps/s; max "

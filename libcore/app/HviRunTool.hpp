@@ -26,6 +26,7 @@ private:
     double m_checkpointEvery = 300.0;
     bool m_resume = false, m_benchmark = false, m_listMaterials = false;
     long m_benchmarkSteps = 200;
+    std::string m_benchmarkScene = "both";
 };
 
 } // namespace hvi::app

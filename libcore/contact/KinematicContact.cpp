@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <omp.h>
 #include <utility>
 
@@ -96,27 +95,51 @@ struct PointGrid {
 KinematicContact::KinematicContact(ContactOptions options, std::vector<ContactBody> bodies)
     : m_options(options), m_bodies(std::move(bodies)) {}
 
-void KinematicContact::rebuildSegments(const fe::ElementSet& el, const fe::NodeSet& nd) {
-    // Boundary edges: edges of exactly one alive element of a body. Axisymmetric: edges on
-    // the axis are no surface.
-    struct Edge {
-        int uses = 0;
-        int32_t from = 0, to = 0, element = 0;
+void KinematicContact::buildEdgeTable(const fe::ElementSet& el) {
+    // Every element edge once per element that has it, grouped by its node pair in ascending
+    // (min, max) order and, within a pair, by element: the order the segments are listed in.
+    struct Use {
+        std::pair<int32_t, int32_t> key;
+        int32_t element, corner;
     };
-    std::map<std::pair<int32_t, int32_t>, Edge> edges;
-    m_nodeElement.assign(nd.size(), -1);
+    std::vector<Use> uses;
+    uses.reserve(4 * el.size());
     for (std::size_t i = 0; i < el.size(); ++i) {
-        if (!el.alive[i]) {
-            continue;
-        }
         for (int a = 0; a < 4; ++a) {
             const int32_t na = el.node(i, a), nb = el.node(i, (a + 1) % 4);
-            Edge& edge = edges[{std::min(na, nb), std::max(na, nb)}];
-            ++edge.uses;
-            edge.from = na;
-            edge.to = nb;
-            edge.element = static_cast<int32_t>(i);
-            m_nodeElement[static_cast<std::size_t>(na)] = static_cast<int32_t>(i);
+            uses.push_back({{std::min(na, nb), std::max(na, nb)}, static_cast<int32_t>(i), a});
+        }
+    }
+    std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
+        return x.key != y.key ? x.key < y.key : x.element < y.element;
+    });
+    m_edgeOffset.clear();
+    m_edgeElement.clear();
+    m_edgeCorner.clear();
+    for (std::size_t k = 0; k < uses.size(); ++k) {
+        if (k == 0 || uses[k].key != uses[k - 1].key) {
+            m_edgeOffset.push_back(static_cast<int32_t>(k));
+        }
+        m_edgeElement.push_back(uses[k].element);
+        m_edgeCorner.push_back(static_cast<uint8_t>(uses[k].corner));
+    }
+    m_edgeOffset.push_back(static_cast<int32_t>(uses.size()));
+    m_edgeTableElements = el.size();
+}
+
+void KinematicContact::rebuildSegments(const fe::ElementSet& el, const fe::NodeSet& nd) {
+    // Boundary edges: edges of exactly one alive element of a body. Axisymmetric: edges on
+    // the axis are no surface. The mesh's edges are tabled once; a rebuild (after every
+    // erosion) is then one pass over them in a fixed order.
+    if (m_edgeTableElements != el.size()) {
+        buildEdgeTable(el);
+    }
+    m_nodeElement.assign(nd.size(), -1);
+    for (std::size_t i = 0; i < el.size(); ++i) {
+        if (el.alive[i]) {
+            for (int a = 0; a < 4; ++a) {
+                m_nodeElement[static_cast<std::size_t>(el.node(i, a))] = static_cast<int32_t>(i);
+            }
         }
     }
     m_segA.clear();
@@ -124,11 +147,23 @@ void KinematicContact::rebuildSegments(const fe::ElementSet& el, const fe::NodeS
     m_segBody.clear();
     m_segElement.clear();
     m_surfaceNode.assign(nd.size(), 0);
-    for (const auto& [key, edge] : edges) {
-        if (edge.uses != 1) {
+    const std::size_t edgeCount = m_edgeOffset.size() - 1;
+    for (std::size_t edge = 0; edge < edgeCount; ++edge) {
+        int aliveUses = 0;
+        std::size_t use = 0;
+        for (auto k = static_cast<std::size_t>(m_edgeOffset[edge]);
+             k < static_cast<std::size_t>(m_edgeOffset[edge + 1]); ++k) {
+            if (el.alive[static_cast<std::size_t>(m_edgeElement[k])]) {
+                ++aliveUses;
+                use = k;
+            }
+        }
+        if (aliveUses != 1) {
             continue;
         }
-        const int32_t na = edge.from, nb = edge.to;
+        const auto element = static_cast<std::size_t>(m_edgeElement[use]);
+        const int corner = m_edgeCorner[use];
+        const int32_t na = el.node(element, corner), nb = el.node(element, (corner + 1) % 4);
         const auto a = static_cast<std::size_t>(na), b = static_cast<std::size_t>(nb);
         if (m_options.axisymmetric && nd.onAxis[a] && nd.onAxis[b]) {
             continue;
@@ -136,7 +171,7 @@ void KinematicContact::rebuildSegments(const fe::ElementSet& el, const fe::NodeS
         m_segA.push_back(na);
         m_segB.push_back(nb);
         m_segBody.push_back(nd.body[a]);
-        m_segElement.push_back(edge.element);
+        m_segElement.push_back(static_cast<int32_t>(element));
         m_surfaceNode[a] = m_surfaceNode[b] = 1;
     }
 }

@@ -121,11 +121,17 @@ private:
     void run(sph::ParticleSet& particles, const ParticleHalfStep& half, fe::ElementSet& elements,
              fe::NodeSet& nodes, double dt, bool constrain);
     void rebuildSegments(const fe::ElementSet& elements, const fe::NodeSet& nodes);
+    void buildEdgeTable(const fe::ElementSet& elements);
 
     ContactOptions m_options;
     std::vector<ContactBody> m_bodies;
     // Master segments: nodes A -> B with the element interior on the left.
     std::vector<int32_t> m_segA, m_segB, m_segBody, m_segElement;
+    // The mesh's edges (CSR by node pair, ascending): the elements using each, and at which
+    // corner the edge starts (corner -> corner + 1).
+    std::vector<int32_t> m_edgeOffset, m_edgeElement;
+    std::vector<uint8_t> m_edgeCorner;
+    std::size_t m_edgeTableElements = std::numeric_limits<std::size_t>::max();
     std::vector<int32_t> m_nodeElement; ///< an alive element of each node (-1: free node)
     std::vector<uint8_t> m_surfaceNode; ///< node lies on a master segment of its own body
     std::vector<uint8_t> m_inContact;   ///< per particle, then per node: in contact last step

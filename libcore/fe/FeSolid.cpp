@@ -30,6 +30,20 @@ double sweptVolume(const QuadGeometry& g, bool axisymmetric) {
     return axisymmetric ? 2.0 * units::kPi * g.centroidR * g.area : g.area;
 }
 
+/// Every corner turns the same way (counter-clockwise): a quadrilateral that folded over at
+/// a corner has no valid mapping from the reference square, whatever its total area.
+bool convex(const QuadState& q) {
+    for (std::size_t a = 0; a < 4; ++a) {
+        const std::size_t next = (a + 1) % 4, prev = (a + 3) % 4;
+        const double cross = (q.z[next] - q.z[a]) * (q.r[prev] - q.r[a]) -
+                             (q.r[next] - q.r[a]) * (q.z[prev] - q.z[a]);
+        if (!(cross > 0.0)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 struct StepVote {
     double dt = std::numeric_limits<double>::infinity();
     int32_t element = -1;
@@ -82,27 +96,56 @@ FeSolid::FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
         const QuadGeometry g = quadGeometry(gather(m_nodes, m_elements, i));
         m_volume[i] = sweptVolume(g, m_options.axisymmetric);
     }
+    m_referenceVolume = m_volume;
+    m_referenceDensity = m_elements.rho;
+    m_referenceShape.resize(ne);
+    for (std::size_t i = 0; i < ne; ++i) {
+        m_referenceShape[i] = referenceShape(gather(m_nodes, m_elements, i));
+    }
 }
 
 void FeSolid::selectEvaluated() {
     // An element whose nodes are all at rest and whose material is in its reference state
     // (no pressure, no viscosity, no deviator) has zero strain rate and exerts no force:
-    // skipping it is exact.
+    // skipping it is exact. Its material leaves the reference state only through an update,
+    // which needs a moving node first; so an element wakes when one of its nodes first moves,
+    // and stays awake (evaluating an element that came to rest again is exact too).
     const auto& el = m_elements;
     const auto& nd = m_nodes;
-    const bool strength = el.hasStrength();
+    const std::size_t ne = el.size();
     m_evaluated.clear();
-    for (std::size_t i = 0; i < el.size(); ++i) {
-        if (!el.alive[i]) {
+    if (!m_options.skipDormant) {
+        for (std::size_t i = 0; i < ne; ++i) {
+            if (el.alive[i]) {
+                m_evaluated.push_back(static_cast<int32_t>(i));
+            }
+        }
+        return;
+    }
+    if (m_fullSelection) {
+        // A start or a resume: the state decides.
+        m_fullSelection = false;
+        m_elementAwake.assign(ne, 0);
+        m_nodeAwake.assign(nd.size(), 0);
+        const bool strength = el.hasStrength();
+        for (std::size_t i = 0; i < ne; ++i) {
+            m_elementAwake[i] =
+                el.p[i] != 0.0 || el.q[i] != 0.0 ||
+                (strength && (el.szz[i] != 0.0 || el.srr[i] != 0.0 || el.srz[i] != 0.0));
+        }
+    }
+    for (std::size_t n = 0; n < nd.size(); ++n) {
+        if (m_nodeAwake[n] || (nd.vz[n] == 0.0 && nd.vr[n] == 0.0)) {
             continue;
         }
-        bool awake = el.p[i] != 0.0 || el.q[i] != 0.0 ||
-                     (strength && (el.szz[i] != 0.0 || el.srr[i] != 0.0 || el.srz[i] != 0.0));
-        for (int a = 0; a < 4 && !awake; ++a) {
-            const auto n = static_cast<std::size_t>(el.node(i, a));
-            awake = nd.vz[n] != 0.0 || nd.vr[n] != 0.0;
+        m_nodeAwake[n] = 1;
+        for (int64_t k = m_nodeElementOffset[n]; k < m_nodeElementOffset[n + 1]; ++k) {
+            m_elementAwake[static_cast<std::size_t>(m_nodeElements[static_cast<std::size_t>(k)] /
+                                                    4)] = 1;
         }
-        if (awake) {
+    }
+    for (std::size_t i = 0; i < ne; ++i) {
+        if (el.alive[i] && m_elementAwake[i]) {
             m_evaluated.push_back(static_cast<int32_t>(i));
         }
     }
@@ -138,8 +181,8 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
             m_previousDeviator[3 * i + 1] = el.srr[i];
             m_previousDeviator[3 * i + 2] = el.srz[i];
         }
-        if (!(gEnd.area > 0.0) || !(gMid.area > 0.0)) {
-            m_erode[i] = 1; // inverted: erode (its state is left as it was)
+        if (!(gEnd.area > 0.0) || !(gMid.area > 0.0) || !convex(end)) {
+            m_erode[i] = 1; // inverted or folded: erode (its state is left as it was)
             m_volumeChange[i] = 0.0;
             m_hourglassWork[i] = 0.0;
             m_volumetricRate[i] = 0.0;
@@ -160,9 +203,21 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         const double rate =
             std::sqrt((2.0 / 3.0) * (ezz * ezz + err * err + ett * ett + 2.0 * ezr * ezr));
         m_rates.strainRate[i] = rate;
-        el.geometricStrain[i] += dt * rate;
+        if (m_options.instantaneousErosionStrain) {
+            el.geometricStrain[i] = instantaneousStrain(end, m_referenceShape[i], axi);
+        } else {
+            el.geometricStrain[i] += dt * rate;
+        }
         m_volumetricRate[i] = trace;
-        if (el.geometricStrain[i] > m_erosionFactor[static_cast<std::size_t>(el.body[i])]) {
+        const auto body = static_cast<std::size_t>(el.body[i]);
+        // Crushed past its equation of state's range (solver::densityCeiling, 2.25 rho0 for
+        // Al 6061-T6, where no shock state of these impacts reaches): a collapsing element,
+        // which the geometric strain misses when its distortion is an hourglass mode (the
+        // one-point deformation gradient does not see it). Its Mie-Grueneisen pressure there
+        // is meaningless (1e4 GPa were seen in a foam layer, and an energy error of -108 %).
+        const bool crushed = sweptVolume(gEnd, axi) * materials.bodies()[body].maxDensity <
+                             m_referenceDensity[i] * m_referenceVolume[i];
+        if (crushed || el.geometricStrain[i] > m_erosionFactor[body]) {
             // Eroded on the strain of this step, before its material update: an element this
             // distorted is close to inversion, and its end-of-step state would be meaningless.
             m_erode[i] = 1;
@@ -182,7 +237,10 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         const double volume = sweptVolume(gEnd, axi);
         m_volumeChange[i] = volume - m_volume[i];
         m_volume[i] = volume;
-        el.rho[i] = el.mass[i] / volume;
+        // rho = m / V, written as rho0 V0 / V (m = rho0 V0 by construction) so that an element
+        // at its reference volume has its reference density exactly: evaluating an undisturbed
+        // element then changes nothing, not even in the last bit.
+        el.rho[i] = m_referenceDensity[i] * (m_referenceVolume[i] / volume);
         const double length = std::sqrt(gEnd.area);
         el.q[i] = trace < 0.0
                       ? el.rho[i] * length * (cq * length * trace * trace - cl * el.cs[i] * trace)
@@ -202,37 +260,39 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         materials.applyPlasticity(el, m_rates, m_evaluated);
     }
 
-    // 4: energy, with the pressure work at the mean of the start and a predicted end pressure.
-    auto energyUpdate = [&](bool predictor) {
+    // 4: energy, with the pressure work at the mean of the start and a predicted end pressure:
+    // a predictor with the start pressure, then the correction -(p_pred - p_start) dV / 2m.
 #pragma omp parallel for schedule(static) if (count > kParallelMinItems)
-        for (std::size_t k = 0; k < count; ++k) {
-            const auto i = static_cast<std::size_t>(m_evaluated[k]);
-            if (m_erode[i]) {
-                continue;
-            }
-            const double dV = m_volumeChange[i];
-            double deviatoricWork = 0.0;
-            if (strength) {
-                const double szz = 0.5 * (el.szz[i] + m_previousDeviator[3 * i]);
-                const double srr = 0.5 * (el.srr[i] + m_previousDeviator[3 * i + 1]);
-                const double srz = 0.5 * (el.srz[i] + m_previousDeviator[3 * i + 2]);
-                const double stt = -(szz + srr);
-                const double power = szz * m_rates.dvzDz[i] + srr * m_rates.dvrDr[i] +
-                                     stt * m_rates.hoopRate[i] +
-                                     srz * (m_rates.dvzDr[i] + m_rates.dvrDz[i]);
-                const double meanVolume = m_volume[i] - 0.5 * dV;
-                deviatoricWork = dt * power * meanVolume;
-            }
-            const double pressure =
-                predictor ? m_previousPressure[i] : 0.5 * (m_previousPressure[i] + el.p[i]);
-            el.e[i] = m_previousEnergy[i] +
-                      (-(pressure + el.q[i]) * dV + deviatoricWork + m_hourglassWork[i]) /
-                          el.mass[i];
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto i = static_cast<std::size_t>(m_evaluated[k]);
+        if (m_erode[i]) {
+            continue;
         }
-    };
-    energyUpdate(true);
+        const double dV = m_volumeChange[i];
+        double deviatoricWork = 0.0;
+        if (strength) {
+            const double szz = 0.5 * (el.szz[i] + m_previousDeviator[3 * i]);
+            const double srr = 0.5 * (el.srr[i] + m_previousDeviator[3 * i + 1]);
+            const double srz = 0.5 * (el.srz[i] + m_previousDeviator[3 * i + 2]);
+            const double stt = -(szz + srr);
+            const double power = szz * m_rates.dvzDz[i] + srr * m_rates.dvrDr[i] +
+                                 stt * m_rates.hoopRate[i] +
+                                 srz * (m_rates.dvzDr[i] + m_rates.dvrDz[i]);
+            const double meanVolume = m_volume[i] - 0.5 * dV;
+            deviatoricWork = dt * power * meanVolume;
+        }
+        el.e[i] = m_previousEnergy[i] +
+                  (-(m_previousPressure[i] + el.q[i]) * dV + deviatoricWork + m_hourglassWork[i]) /
+                      el.mass[i];
+    }
     materials.updatePressure(el, m_evaluated);
-    energyUpdate(false);
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto i = static_cast<std::size_t>(m_evaluated[k]);
+        if (!m_erode[i]) {
+            el.e[i] -= 0.5 * (el.p[i] - m_previousPressure[i]) * m_volumeChange[i] / el.mass[i];
+        }
+    }
     materials.updatePressure(el, m_evaluated);
 
     // 5: erosion.
@@ -240,8 +300,8 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         const auto i = static_cast<std::size_t>(m_evaluated[k]);
         const auto b = static_cast<std::size_t>(el.body[i]);
         // Failed completely: no deviator, no tension, and expanded below the stress cut-off.
-        const bool failed = strength && el.damage[i] >= 1.0 &&
-                            el.rho[i] < materials.bodies()[b].minDensity;
+        const bool failed =
+            strength && el.damage[i] >= 1.0 && el.rho[i] < materials.bodies()[b].minDensity;
         if (m_erode[i] || failed || el.geometricStrain[i] > m_erosionFactor[b]) {
             erode(i);
         }
@@ -269,14 +329,20 @@ void FeSolid::computeForces(const solver::MaterialPackage& materials) {
     materials.updatePressure(m_elements);
     // The time step of an undisturbed element (the floor for every dormant element, which
     // does not vote while skipped).
+    // Also the hourglass damping rate of every element at this state: an element's first
+    // update after it wakes takes the rate of the last assembly, which for a dormant element
+    // is this one (what evaluating it every step would have given).
+    const auto& el = m_elements;
     StepVote vote;
-    for (std::size_t i = 0; i < m_elements.size(); ++i) {
-        if (!m_elements.alive[i]) {
+    for (std::size_t i = 0; i < el.size(); ++i) {
+        if (!el.alive[i]) {
             continue;
         }
-        const QuadGeometry g = quadGeometry(gather(m_nodes, m_elements, i));
-        if (g.area > 0.0 && m_elements.cs[i] > 0.0) {
-            vote.offer(g.area / g.maxDiagonal / m_elements.cs[i], static_cast<int32_t>(i));
+        const QuadGeometry g = quadGeometry(gather(m_nodes, el, i));
+        if (g.area > 0.0 && el.cs[i] > 0.0) {
+            vote.offer(g.area / g.maxDiagonal / el.cs[i], static_cast<int32_t>(i));
+            m_hourglassRate[i] = 0.25 * m_options.hourglassCoefficient * el.rho[i] * el.cs[i] *
+                                 sweptVolume(g, m_options.axisymmetric) / std::sqrt(g.area);
         }
     }
     m_referenceDt = vote.dt;
@@ -358,8 +424,8 @@ void FeSolid::assembleForces() {
             double* f = &m_elementForce[8 * i];
             for (std::size_t a = 0; a < 4; ++a) {
                 f[2 * a] = -volume * (sigmaZZ * g.bz[a] + srz * g.br[a]) - chg * qz * gamma[a];
-                f[2 * a + 1] = -volume * (srz * g.bz[a] + sigmaRR * g.br[a]) - hoopForce -
-                               chg * qr * gamma[a];
+                f[2 * a + 1] =
+                    -volume * (srz * g.bz[a] + sigmaRR * g.br[a]) - hoopForce - chg * qr * gamma[a];
             }
             // Element time step.
             const double trace = m_volumetricRate[i];
@@ -407,7 +473,8 @@ void FeSolid::restoreErosion(double energy, std::size_t count) {
 }
 
 void FeSolid::recountNodeElements() {
-    m_fullAssembly = true; // the restored forces are recomputed everywhere
+    m_fullAssembly = true;  // the restored forces are recomputed everywhere
+    m_fullSelection = true; // and the awake set follows the restored state
     std::fill(m_nodes.elementCount.begin(), m_nodes.elementCount.end(), 0);
     for (std::size_t i = 0; i < m_elements.size(); ++i) {
         if (m_elements.alive[i]) {

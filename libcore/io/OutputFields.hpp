@@ -318,7 +318,9 @@ struct FieldTable<FeElementFieldsOf<S>> {
         bindField(&F::plasticStrain, "PlasticStrain", 1, "-", kDimensionless, opt,
                   "Equivalent plastic strain"),
         bindField(&F::geometricStrain, "GeometricStrain", 1, "-", kDimensionless, req,
-                  "Geometric (total effective) strain, compared with the erosion factor"),
+                  "Geometric strain compared with the erosion factor (fe.erosion_strain: "
+                  "equivalent logarithmic strain of the current shape, or the integral of the "
+                  "equivalent strain rate)"),
         bindField(&F::pressure, "Pressure", 1, "GPa", kPressure, req,
                   "Pressure from the equation of state, positive in compression"),
         bindField(&F::density, "Density", 1, "g/cm3", kDensity, req,

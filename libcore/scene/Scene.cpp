@@ -158,6 +158,7 @@ Scene parseScene(const json& document, const std::string& file,
     scene.fe.bulkViscosityLinear = fe.at("bulk_viscosity_linear");
     scene.fe.bulkViscosityQuadratic = fe.at("bulk_viscosity_quadratic");
     scene.fe.erodedToParticles = fe.at("eroded_material") == "particles";
+    scene.fe.instantaneousErosionStrain = fe.at("erosion_strain") == "instantaneous";
 
     const json& run = doc.at("run");
     scene.run.endTime = run.at("end_time_us");
@@ -196,8 +197,8 @@ Scene parseScene(const json& document, const std::string& file,
         b.role = parseRole(jb.at("role"));
         b.shape = parseShape(jb.at("shape"));
         b.material = jb.at("material");
-        b.discretization = jb.at("discretization") == "fe" ? Discretization::Fe
-                                                           : Discretization::Sph;
+        b.discretization =
+            jb.at("discretization") == "fe" ? Discretization::Fe : Discretization::Sph;
         b.velocityZ = jb.at("velocity").at("z_km_s");
         b.velocityR = jb.at("velocity").at("r_km_s");
         b.spacing = jb.value("spacing_mm", b.discretization == Discretization::Fe
@@ -228,8 +229,8 @@ Scene parseScene(const json& document, const std::string& file,
             issues.push_back({file, ptr + "/shape", "empty rectangle",
                               "z_max_mm > z_min_mm and r_max_mm > r_min_mm"});
         }
-        if (b.shape.kind != ShapeKind::Sphere && b.spacing * 2.0 > b.shape.boundZMax() -
-                                                                       b.shape.boundZMin()) {
+        if (b.shape.kind != ShapeKind::Sphere &&
+            b.spacing * 2.0 > b.shape.boundZMax() - b.shape.boundZMin()) {
             issues.push_back({file, ptr + "/shape",
                               "thinner than two particle spacings (" + std::to_string(b.spacing) +
                                   " mm): it cannot be resolved",

@@ -66,6 +66,9 @@ struct FeControls {
     double bulkViscosityLinear = 0.06, bulkViscosityQuadratic = 1.5;
     /// Eroded elements become SPH particles (true) or leave free nodes (false).
     bool erodedToParticles = true;
+    /// Geometric strain for erosion: the current strain (true) or the integral of the
+    /// strain rate (false).
+    bool instantaneousErosionStrain = true;
 };
 
 struct RunControls {

@@ -80,7 +80,10 @@ public:
     fe::FeSolid* finiteElements() { return m_fe.get(); }
     const contact::KinematicContact* contact() const { return m_contact.get(); }
     contact::KinematicContact* contact() { return m_contact.get(); }
-    /// Wall time spent so far in each package [s] (for the benchmark's throughput figures).
+    /// Wall time spent so far in each package [s] (for the benchmark's throughput figures):
+    /// SPH every particle loop of a step (kicks, drift, rates, material pipeline, deletion),
+    /// FE the node kicks and drift, the element update and the eroded elements' conversion,
+    /// contact the constraint alone.
     struct PackageSeconds {
         double sph = 0.0, fe = 0.0, contact = 0.0;
     };
