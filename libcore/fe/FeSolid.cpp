@@ -44,6 +44,13 @@ bool convex(const QuadState& q) {
     return true;
 }
 
+/// The viscous hourglass damping rate c_hg = kappa rho c V / (4 sqrt(A)) [mg/us]; one formula
+/// for the start of a run and every assembly, so a woken element's first rate is the one
+/// evaluating it all along would have given, to the bit.
+double hourglassDamping(double kappa, double rho, double soundSpeed, double volume, double area) {
+    return 0.25 * kappa * rho * soundSpeed * volume / std::sqrt(area);
+}
+
 struct StepVote {
     double dt = std::numeric_limits<double>::infinity();
     int32_t element = -1;
@@ -215,8 +222,12 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         // which the geometric strain misses when its distortion is an hourglass mode (the
         // one-point deformation gradient does not see it). Its Mie-Grueneisen pressure there
         // is meaningless (1e4 GPa were seen in a foam layer, and an energy error of -108 %).
-        const bool crushed = sweptVolume(gEnd, axi) * materials.bodies()[body].maxDensity <
-                             m_referenceDensity[i] * m_referenceVolume[i];
+        // rho = m / V, written as rho0 V0 / V (m = rho0 V0 by construction) so that an element
+        // at its reference volume has its reference density exactly: evaluating an undisturbed
+        // element then changes nothing, not even in the last bit.
+        const double volume = sweptVolume(gEnd, axi);
+        const double density = m_referenceDensity[i] * (m_referenceVolume[i] / volume);
+        const bool crushed = density > materials.bodies()[body].maxDensity;
         if (crushed || el.geometricStrain[i] > m_erosionFactor[body]) {
             // Eroded on the strain of this step, before its material update: an element this
             // distorted is close to inversion, and its end-of-step state would be meaningless.
@@ -234,13 +245,9 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         }
         m_hourglassWork[i] = dt * m_hourglassRate[i] * (qz * qz + qr * qr);
 
-        const double volume = sweptVolume(gEnd, axi);
         m_volumeChange[i] = volume - m_volume[i];
         m_volume[i] = volume;
-        // rho = m / V, written as rho0 V0 / V (m = rho0 V0 by construction) so that an element
-        // at its reference volume has its reference density exactly: evaluating an undisturbed
-        // element then changes nothing, not even in the last bit.
-        el.rho[i] = m_referenceDensity[i] * (m_referenceVolume[i] / volume);
+        el.rho[i] = density;
         const double length = std::sqrt(gEnd.area);
         el.q[i] = trace < 0.0
                       ? el.rho[i] * length * (cq * length * trace * trace - cl * el.cs[i] * trace)
@@ -302,7 +309,7 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         // Failed completely: no deviator, no tension, and expanded below the stress cut-off.
         const bool failed =
             strength && el.damage[i] >= 1.0 && el.rho[i] < materials.bodies()[b].minDensity;
-        if (m_erode[i] || failed || el.geometricStrain[i] > m_erosionFactor[b]) {
+        if (m_erode[i] || failed) { // m_erode: inverted, folded, crushed or strained (step 1)
             erode(i);
         }
     }
@@ -341,8 +348,9 @@ void FeSolid::computeForces(const solver::MaterialPackage& materials) {
         const QuadGeometry g = quadGeometry(gather(m_nodes, el, i));
         if (g.area > 0.0 && el.cs[i] > 0.0) {
             vote.offer(g.area / g.maxDiagonal / el.cs[i], static_cast<int32_t>(i));
-            m_hourglassRate[i] = 0.25 * m_options.hourglassCoefficient * el.rho[i] * el.cs[i] *
-                                 sweptVolume(g, m_options.axisymmetric) / std::sqrt(g.area);
+            m_hourglassRate[i] =
+                hourglassDamping(m_options.hourglassCoefficient, el.rho[i], el.cs[i],
+                                 sweptVolume(g, m_options.axisymmetric), g.area);
         }
     }
     m_referenceDt = vote.dt;
@@ -412,8 +420,7 @@ void FeSolid::assembleForces() {
             const double sigmaZZ = szz - pq, sigmaRR = srr - pq, sigmaTT = -(szz + srr) - pq;
             const double hoopForce = axi ? volume * sigmaTT / (4.0 * g.meanR) : 0.0;
             // Hourglass control.
-            const double length = std::sqrt(g.area);
-            const double chg = 0.25 * kappa * el.rho[i] * el.cs[i] * volume / length;
+            const double chg = hourglassDamping(kappa, el.rho[i], el.cs[i], volume, g.area);
             m_hourglassRate[i] = chg;
             const auto gamma = hourglassBase(s, g);
             double qz = 0.0, qr = 0.0;
