@@ -16,4 +16,22 @@ inline constexpr std::size_t kParallelMinItems = 4096;
 /// active particles), whose pair loop ran on one thread under the general threshold.
 inline constexpr std::size_t kParallelMinHeavyItems = 256;
 
+/// body(k) for k in [0, count): threaded above kParallelMinItems, otherwise a plain loop that
+/// does not enter the OpenMP runtime at all (an `if(false)` parallel region still builds a
+/// one-thread team, which costs more than a tile of a few hundred light items; the FE update
+/// calls the material pipeline once per such tile, from inside its own parallel region).
+template <class Body>
+void parallelFor(std::size_t count, Body&& body) {
+    if (count > kParallelMinItems) {
+#pragma omp parallel for schedule(static)
+        for (std::size_t k = 0; k < count; ++k) {
+            body(k);
+        }
+    } else {
+        for (std::size_t k = 0; k < count; ++k) {
+            body(k);
+        }
+    }
+}
+
 } // namespace hvi

@@ -5,8 +5,8 @@
 #include "fe/QuadKinematics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <limits>
 #include <omp.h>
 
 namespace hvi::fe {
@@ -51,17 +51,6 @@ double hourglassDamping(double kappa, double rho, double soundSpeed, double volu
     return 0.25 * kappa * rho * soundSpeed * volume / std::sqrt(area);
 }
 
-struct StepVote {
-    double dt = std::numeric_limits<double>::infinity();
-    int32_t element = -1;
-    void offer(double candidate, int32_t i) {
-        if (candidate < dt || (candidate == dt && i < element)) {
-            dt = candidate;
-            element = i;
-        }
-    }
-};
-
 } // namespace
 
 FeSolid::FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
@@ -74,13 +63,8 @@ FeSolid::FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
     m_elementForce.assign(8 * ne, 0.0);
     m_hourglassRate.assign(ne, 0.0);
     m_volumetricRate.assign(ne, 0.0);
-    m_previousEnergy.assign(ne, 0.0);
-    m_previousPressure.assign(ne, 0.0);
-    m_previousDeviator.assign(3 * ne, 0.0);
     m_volume.assign(ne, 0.0);
-    m_volumeChange.assign(ne, 0.0);
     m_erode.assign(ne, 0);
-    m_hourglassWork.assign(ne, 0.0);
     // Node -> element adjacency.
     m_nodeElementOffset.assign(nn + 1, 0);
     for (const int32_t n : m_elements.connectivity) {
@@ -109,6 +93,9 @@ FeSolid::FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
     for (std::size_t i = 0; i < ne; ++i) {
         m_referenceShape[i] = referenceShape(gather(m_nodes, m_elements, i));
     }
+    for (const double factor : m_erosionFactor) {
+        m_strainRatioLimit.push_back(stretchRatioLimit(factor));
+    }
 }
 
 void FeSolid::selectEvaluated() {
@@ -116,29 +103,28 @@ void FeSolid::selectEvaluated() {
     // (no pressure, no viscosity, no deviator) has zero strain rate and exerts no force:
     // skipping it is exact. Its material leaves the reference state only through an update,
     // which needs a moving node first; so an element wakes when one of its nodes first moves,
-    // and stays awake (evaluating an element that came to rest again is exact too).
+    // and stays awake (evaluating an element that came to rest again is exact too). The list
+    // changes only when elements wake or erode, so it is kept and merged, not rebuilt.
     const auto& el = m_elements;
     const auto& nd = m_nodes;
     const std::size_t ne = el.size();
-    m_evaluated.clear();
-    if (!m_options.skipDormant) {
-        for (std::size_t i = 0; i < ne; ++i) {
-            if (el.alive[i]) {
-                m_evaluated.push_back(static_cast<int32_t>(i));
-            }
-        }
-        return;
-    }
+    m_woken.clear();
     if (m_fullSelection) {
         // A start or a resume: the state decides.
         m_fullSelection = false;
         m_elementAwake.assign(ne, 0);
         m_nodeAwake.assign(nd.size(), 0);
+        m_nodeMarked.assign(nd.size(), 0);
+        m_gatherNodes.clear();
+        m_evaluated.clear();
         const bool strength = el.hasStrength();
         for (std::size_t i = 0; i < ne; ++i) {
             m_elementAwake[i] =
-                el.p[i] != 0.0 || el.q[i] != 0.0 ||
+                !m_options.skipDormant || el.p[i] != 0.0 || el.q[i] != 0.0 ||
                 (strength && (el.szz[i] != 0.0 || el.srr[i] != 0.0 || el.srz[i] != 0.0));
+            if (m_elementAwake[i]) {
+                m_woken.push_back(static_cast<int32_t>(i));
+            }
         }
     }
     for (std::size_t n = 0; n < nd.size(); ++n) {
@@ -147,32 +133,104 @@ void FeSolid::selectEvaluated() {
         }
         m_nodeAwake[n] = 1;
         for (int64_t k = m_nodeElementOffset[n]; k < m_nodeElementOffset[n + 1]; ++k) {
-            m_elementAwake[static_cast<std::size_t>(m_nodeElements[static_cast<std::size_t>(k)] /
-                                                    4)] = 1;
+            const auto e = m_nodeElements[static_cast<std::size_t>(k)] / 4;
+            if (!m_elementAwake[static_cast<std::size_t>(e)]) {
+                m_elementAwake[static_cast<std::size_t>(e)] = 1;
+                m_woken.push_back(e);
+            }
         }
     }
-    for (std::size_t i = 0; i < ne; ++i) {
-        if (el.alive[i] && m_elementAwake[i]) {
-            m_evaluated.push_back(static_cast<int32_t>(i));
+    if (m_woken.empty() && !m_erodedSinceSelection) {
+        return;
+    }
+    m_erodedSinceSelection = false;
+    std::sort(m_woken.begin(), m_woken.end());
+    // Merge the alive elements of the kept list and the woken ones (both ascending).
+    m_merged.clear();
+    std::size_t k = 0;
+    for (const int32_t e : m_evaluated) {
+        for (; k < m_woken.size() && m_woken[k] < e; ++k) {
+            admit(m_woken[k]);
+        }
+        if (el.alive[static_cast<std::size_t>(e)]) {
+            m_merged.push_back(e);
+        }
+    }
+    for (; k < m_woken.size(); ++k) {
+        admit(m_woken[k]);
+    }
+    m_evaluated.swap(m_merged);
+}
+
+void FeSolid::admit(int32_t element) {
+    const auto i = static_cast<std::size_t>(element);
+    if (!m_elements.alive[i]) {
+        return;
+    }
+    m_merged.push_back(element);
+    // Its nodes join the gathered set for good (a node of an element that later erodes
+    // gathers zeros from it, which is exact).
+    for (int a = 0; a < 4; ++a) {
+        const int32_t n = m_elements.node(i, a);
+        if (!m_nodeMarked[static_cast<std::size_t>(n)]) {
+            m_nodeMarked[static_cast<std::size_t>(n)] = 1;
+            m_gatherNodes.push_back(n);
         }
     }
 }
 
 void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
+    selectEvaluated();
+    m_erodedNow.clear();
+    // Every element is updated independently, so the evaluated list is cut into tiles that each
+    // go through the whole update (kinematics, deviator, energy, equation of state, forces)
+    // while their data is still in cache, instead of one pass over the list per stage.
+    zeroForcesIfFull();
+    const std::size_t count = m_evaluated.size();
+    const std::size_t tiles = (count + kTileSize - 1) / kTileSize;
+    std::vector<StepVote> votes(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel if (count > kParallelMinItems)
+    {
+        StepVote local;
+#pragma omp for schedule(static)
+        for (std::size_t t = 0; t < tiles; ++t) {
+            const std::size_t first = t * kTileSize;
+            updateTile({m_evaluated.data() + first, std::min(kTileSize, count - first)}, dt,
+                       materials, local);
+        }
+        votes[static_cast<std::size_t>(omp_get_thread_num())] = local;
+    }
+    // 5: erosion (inverted, folded, crushed or strained in step 1, or failed), in ascending
+    // order whatever the thread count.
+    for (const int32_t e : m_evaluated) {
+        if (m_erode[static_cast<std::size_t>(e)]) {
+            erode(static_cast<std::size_t>(e));
+        }
+    }
+    finishAssembly(votes);
+}
+
+void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
+                         const solver::MaterialPackage& materials, StepVote& vote) {
     auto& el = m_elements;
     const auto& nd = m_nodes;
     const bool axi = m_options.axisymmetric;
     const bool strength = el.hasStrength();
     const double cq = m_options.bulkQuadratic, cl = m_options.bulkLinear;
-    selectEvaluated();
-    m_erodedNow.clear();
-    const std::size_t count = m_evaluated.size();
+    // What the energy update needs of the step's start and of step 1, per tile slot: kept on
+    // the stack (in cache), not in element arrays that every update would stream through.
+    struct StepStart {
+        double energy, pressure, szz, srr, srz;
+        double volumeChange;  ///< [mm^3]
+        double hourglassWork; ///< of the hourglass force over the step [J]
+    };
+    std::array<StepStart, kTileSize> start;
 
     // 1-2: kinematics at mid-step, density from the end-of-step swept volume, bulk viscosity,
     // geometric strain.
-#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
-    for (std::size_t k = 0; k < count; ++k) {
-        const auto i = static_cast<std::size_t>(m_evaluated[k]);
+    for (std::size_t k = 0; k < tile.size(); ++k) {
+        const auto i = static_cast<std::size_t>(tile[k]);
+        StepStart& s0 = start[k];
         const QuadState end = gather(nd, el, i);
         QuadState mid = end;
         for (std::size_t a = 0; a < 4; ++a) {
@@ -181,17 +239,17 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         }
         const QuadGeometry gMid = quadGeometry(mid);
         const QuadGeometry gEnd = quadGeometry(end);
-        m_previousEnergy[i] = el.e[i];
-        m_previousPressure[i] = el.p[i];
+        s0.energy = el.e[i];
+        s0.pressure = el.p[i];
         if (strength) {
-            m_previousDeviator[3 * i] = el.szz[i];
-            m_previousDeviator[3 * i + 1] = el.srr[i];
-            m_previousDeviator[3 * i + 2] = el.srz[i];
+            s0.szz = el.szz[i];
+            s0.srr = el.srr[i];
+            s0.srz = el.srz[i];
         }
         if (!(gEnd.area > 0.0) || !(gMid.area > 0.0) || !convex(end)) {
             m_erode[i] = 1; // inverted or folded: erode (its state is left as it was)
-            m_volumeChange[i] = 0.0;
-            m_hourglassWork[i] = 0.0;
+            s0.volumeChange = 0.0;
+            s0.hourglassWork = 0.0;
             m_volumetricRate[i] = 0.0;
             continue;
         }
@@ -210,13 +268,21 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         const double rate =
             std::sqrt((2.0 / 3.0) * (ezz * ezz + err * err + ett * ett + 2.0 * ezr * ezr));
         m_rates.strainRate[i] = rate;
-        if (m_options.instantaneousErosionStrain) {
-            el.geometricStrain[i] = instantaneousStrain(end, m_referenceShape[i], axi);
-        } else {
-            el.geometricStrain[i] += dt * rate;
-        }
         m_volumetricRate[i] = trace;
         const auto body = static_cast<std::size_t>(el.body[i]);
+        bool strained = false;
+        if (m_options.instantaneousErosionStrain) {
+            // The logarithms only where a cheap bound cannot rule erosion out (the stored
+            // strain of the others is refreshed for output by erosionStrain()).
+            const Stretch stretch = stretchOf(end, m_referenceShape[i], axi);
+            if (!strainCertainlyBelow(stretch, m_strainRatioLimit[body])) {
+                el.geometricStrain[i] = equivalentLogStrain(stretch);
+                strained = el.geometricStrain[i] > m_erosionFactor[body];
+            }
+        } else {
+            el.geometricStrain[i] += dt * rate;
+            strained = el.geometricStrain[i] > m_erosionFactor[body];
+        }
         // Crushed past its equation of state's range (solver::densityCeiling, 2.25 rho0 for
         // Al 6061-T6, where no shock state of these impacts reaches): a collapsing element,
         // which the geometric strain misses when its distortion is an hourglass mode (the
@@ -228,12 +294,12 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
         const double volume = sweptVolume(gEnd, axi);
         const double density = m_referenceDensity[i] * (m_referenceVolume[i] / volume);
         const bool crushed = density > materials.bodies()[body].maxDensity;
-        if (crushed || el.geometricStrain[i] > m_erosionFactor[body]) {
+        if (crushed || strained) {
             // Eroded on the strain of this step, before its material update: an element this
             // distorted is close to inversion, and its end-of-step state would be meaningless.
             m_erode[i] = 1;
-            m_volumeChange[i] = 0.0;
-            m_hourglassWork[i] = 0.0;
+            s0.volumeChange = 0.0;
+            s0.hourglassWork = 0.0;
             continue;
         }
         // Work of the hourglass force over the step, returned to the element as heat.
@@ -243,9 +309,9 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
             qz += gamma[a] * end.vz[a];
             qr += gamma[a] * end.vr[a];
         }
-        m_hourglassWork[i] = dt * m_hourglassRate[i] * (qz * qz + qr * qr);
+        s0.hourglassWork = dt * m_hourglassRate[i] * (qz * qz + qr * qr);
 
-        m_volumeChange[i] = volume - m_volume[i];
+        s0.volumeChange = volume - m_volume[i];
         m_volume[i] = volume;
         el.rho[i] = density;
         const double length = std::sqrt(gEnd.area);
@@ -256,31 +322,30 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
 
     // 3: deviator (Jaumann rate over the step, then radial return and damage).
     if (strength) {
-        materials.addStressRates(el, m_evaluated, m_rates);
-#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
-        for (std::size_t k = 0; k < count; ++k) {
-            const auto i = static_cast<std::size_t>(m_evaluated[k]);
+        materials.addStressRates(el, tile, m_rates);
+        for (const int32_t element : tile) {
+            const auto i = static_cast<std::size_t>(element);
             el.szz[i] += dt * m_rates.dszz[i];
             el.srr[i] += dt * m_rates.dsrr[i];
             el.srz[i] += dt * m_rates.dsrz[i];
         }
-        materials.applyPlasticity(el, m_rates, m_evaluated);
+        materials.applyPlasticity(el, m_rates, tile);
     }
 
     // 4: energy, with the pressure work at the mean of the start and a predicted end pressure:
     // a predictor with the start pressure, then the correction -(p_pred - p_start) dV / 2m.
-#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
-    for (std::size_t k = 0; k < count; ++k) {
-        const auto i = static_cast<std::size_t>(m_evaluated[k]);
+    for (std::size_t k = 0; k < tile.size(); ++k) {
+        const auto i = static_cast<std::size_t>(tile[k]);
+        StepStart& s0 = start[k];
         if (m_erode[i]) {
             continue;
         }
-        const double dV = m_volumeChange[i];
+        const double dV = s0.volumeChange;
         double deviatoricWork = 0.0;
         if (strength) {
-            const double szz = 0.5 * (el.szz[i] + m_previousDeviator[3 * i]);
-            const double srr = 0.5 * (el.srr[i] + m_previousDeviator[3 * i + 1]);
-            const double srz = 0.5 * (el.srz[i] + m_previousDeviator[3 * i + 2]);
+            const double szz = 0.5 * (el.szz[i] + s0.szz);
+            const double srr = 0.5 * (el.srr[i] + s0.srr);
+            const double srz = 0.5 * (el.srz[i] + s0.srz);
             const double stt = -(szz + srr);
             const double power = szz * m_rates.dvzDz[i] + srr * m_rates.dvrDr[i] +
                                  stt * m_rates.hoopRate[i] +
@@ -288,34 +353,29 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
             const double meanVolume = m_volume[i] - 0.5 * dV;
             deviatoricWork = dt * power * meanVolume;
         }
-        el.e[i] = m_previousEnergy[i] +
-                  (-(m_previousPressure[i] + el.q[i]) * dV + deviatoricWork + m_hourglassWork[i]) /
-                      el.mass[i];
+        el.e[i] = s0.energy +
+                  (-(s0.pressure + el.q[i]) * dV + deviatoricWork + s0.hourglassWork) / el.mass[i];
     }
-    materials.updatePressure(el, m_evaluated);
-#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
-    for (std::size_t k = 0; k < count; ++k) {
-        const auto i = static_cast<std::size_t>(m_evaluated[k]);
-        if (!m_erode[i]) {
-            el.e[i] -= 0.5 * (el.p[i] - m_previousPressure[i]) * m_volumeChange[i] / el.mass[i];
+    materials.updatePressure(el, tile);
+    for (std::size_t k = 0; k < tile.size(); ++k) {
+        const auto i = static_cast<std::size_t>(tile[k]);
+        StepStart& s0 = start[k];
+        if (m_erode[i]) {
+            continue;
         }
-    }
-    materials.updatePressure(el, m_evaluated);
-
-    // 5: erosion.
-    for (std::size_t k = 0; k < count; ++k) {
-        const auto i = static_cast<std::size_t>(m_evaluated[k]);
-        const auto b = static_cast<std::size_t>(el.body[i]);
+        el.e[i] -= 0.5 * (el.p[i] - s0.pressure) * s0.volumeChange / el.mass[i];
         // Failed completely: no deviator, no tension, and expanded below the stress cut-off.
-        const bool failed =
-            strength && el.damage[i] >= 1.0 && el.rho[i] < materials.bodies()[b].minDensity;
-        if (m_erode[i] || failed) { // m_erode: inverted, folded, crushed or strained (step 1)
-            erode(i);
+        const auto b = static_cast<std::size_t>(el.body[i]);
+        if (strength && el.damage[i] >= 1.0 && el.rho[i] < materials.bodies()[b].minDensity) {
+            m_erode[i] = 1;
         }
     }
+    materials.updatePressure(el, tile);
 
-    // 6: forces at the end-of-step geometry.
-    assembleForces();
+    // 6: forces at the end-of-step geometry (an element about to erode holds none).
+    for (const int32_t element : tile) {
+        elementForces(static_cast<std::size_t>(element), vote);
+    }
 }
 
 void FeSolid::erode(std::size_t i) {
@@ -327,6 +387,7 @@ void FeSolid::erode(std::size_t i) {
     }
     m_erodedNow.push_back(static_cast<int32_t>(i));
     ++m_erodedCount;
+    m_erodedSinceSelection = true;
     for (int a = 0; a < 4; ++a) {
         --m_nodes.elementCount[static_cast<std::size_t>(el.node(i, a))];
     }
@@ -358,43 +419,18 @@ void FeSolid::computeForces(const solver::MaterialPackage& materials) {
     assembleForces();
 }
 
-void FeSolid::assembleForces() {
-    auto& el = m_elements;
-    auto& nd = m_nodes;
-    const bool axi = m_options.axisymmetric;
-    const bool strength = el.hasStrength();
-    const double kappa = m_options.hourglassCoefficient;
-    const double cq = m_options.bulkQuadratic, cl = m_options.bulkLinear;
-    // Only elements evaluated now or at the last assembly can hold a force: zero the latter's,
-    // and gather only at their nodes and the evaluated elements' (every other node's force
-    // is, and stays, zero). The first assembly (and the first after a resume) covers all.
-    const std::size_t nn = nd.size();
+void FeSolid::zeroForcesIfFull() {
+    // Only evaluated elements can hold a force: each writes its corner forces (zeros once it
+    // has eroded, after which it leaves the list), and only the nodes of elements ever
+    // evaluated are gathered (every other node's force is, and stays, zero). The first
+    // assembly (and the first after a resume) covers all.
     if (m_fullAssembly) {
         std::fill(m_elementForce.begin(), m_elementForce.end(), 0.0);
-    } else {
-        for (const int32_t e : m_assembled) {
-            std::fill_n(m_elementForce.begin() + 8 * static_cast<std::ptrdiff_t>(e), 8, 0.0);
-        }
     }
-    m_gatherNodes.clear();
-    if (m_nodeMarked.size() != nn) {
-        m_nodeMarked.assign(nn, 0);
-    }
-    for (const auto* list : {&m_assembled, &m_evaluated}) {
-        for (const int32_t e : *list) {
-            for (int a = 0; a < 4; ++a) {
-                const int32_t n = el.node(static_cast<std::size_t>(e), a);
-                if (!m_nodeMarked[static_cast<std::size_t>(n)]) {
-                    m_nodeMarked[static_cast<std::size_t>(n)] = 1;
-                    m_gatherNodes.push_back(n);
-                }
-            }
-        }
-    }
-    for (const int32_t n : m_gatherNodes) {
-        m_nodeMarked[static_cast<std::size_t>(n)] = 0;
-    }
-    m_assembled = m_evaluated;
+}
+
+void FeSolid::assembleForces() {
+    zeroForcesIfFull();
     const std::size_t count = m_evaluated.size();
     std::vector<StepVote> votes(static_cast<std::size_t>(omp_get_max_threads()));
 #pragma omp parallel if (count > kParallelMinItems)
@@ -402,50 +438,64 @@ void FeSolid::assembleForces() {
         StepVote local;
 #pragma omp for schedule(static)
         for (std::size_t k = 0; k < count; ++k) {
-            const auto i = static_cast<std::size_t>(m_evaluated[k]);
-            if (!el.alive[i]) {
-                m_hourglassRate[i] = 0.0;
-                continue;
-            }
-            const QuadState s = gather(nd, el, i);
-            const QuadGeometry g = quadGeometry(s);
-            if (!(g.area > 0.0)) {
-                continue; // eroded at the next update
-            }
-            const double volume = sweptVolume(g, axi);
-            const double pq = el.p[i] + el.q[i];
-            const double szz = strength ? el.szz[i] : 0.0;
-            const double srr = strength ? el.srr[i] : 0.0;
-            const double srz = strength ? el.srz[i] : 0.0;
-            const double sigmaZZ = szz - pq, sigmaRR = srr - pq, sigmaTT = -(szz + srr) - pq;
-            const double hoopForce = axi ? volume * sigmaTT / (4.0 * g.meanR) : 0.0;
-            // Hourglass control.
-            const double chg = hourglassDamping(kappa, el.rho[i], el.cs[i], volume, g.area);
-            m_hourglassRate[i] = chg;
-            const auto gamma = hourglassBase(s, g);
-            double qz = 0.0, qr = 0.0;
-            for (std::size_t a = 0; a < 4; ++a) {
-                qz += gamma[a] * s.vz[a];
-                qr += gamma[a] * s.vr[a];
-            }
-            double* f = &m_elementForce[8 * i];
-            for (std::size_t a = 0; a < 4; ++a) {
-                f[2 * a] = -volume * (sigmaZZ * g.bz[a] + srz * g.br[a]) - chg * qz * gamma[a];
-                f[2 * a + 1] =
-                    -volume * (srz * g.bz[a] + sigmaRR * g.br[a]) - hoopForce - chg * qr * gamma[a];
-            }
-            // Element time step.
-            const double trace = m_volumetricRate[i];
-            const double lengthDt = g.area / g.maxDiagonal;
-            const double c = el.cs[i];
-            const double qSpeed = trace < 0.0 ? cq * lengthDt * std::fabs(trace) + cl * c : 0.0;
-            const double denom = qSpeed + std::sqrt(qSpeed * qSpeed + c * c);
-            if (denom > 0.0) {
-                local.offer(lengthDt / denom, static_cast<int32_t>(i));
-            }
+            elementForces(static_cast<std::size_t>(m_evaluated[k]), local);
         }
         votes[static_cast<std::size_t>(omp_get_thread_num())] = local;
     }
+    finishAssembly(votes);
+}
+
+void FeSolid::elementForces(std::size_t i, StepVote& vote) {
+    const auto& el = m_elements;
+    const bool axi = m_options.axisymmetric;
+    const bool strength = el.hasStrength();
+    const double cq = m_options.bulkQuadratic, cl = m_options.bulkLinear;
+    double* f = &m_elementForce[8 * i];
+    if (!el.alive[i] || m_erode[i]) {
+        m_hourglassRate[i] = 0.0;
+        std::fill_n(f, 8, 0.0);
+        return;
+    }
+    const QuadState s = gather(m_nodes, el, i);
+    const QuadGeometry g = quadGeometry(s);
+    if (!(g.area > 0.0)) {
+        std::fill_n(f, 8, 0.0); // eroded at the next update
+        return;
+    }
+    const double volume = sweptVolume(g, axi);
+    const double pq = el.p[i] + el.q[i];
+    const double szz = strength ? el.szz[i] : 0.0;
+    const double srr = strength ? el.srr[i] : 0.0;
+    const double srz = strength ? el.srz[i] : 0.0;
+    const double sigmaZZ = szz - pq, sigmaRR = srr - pq, sigmaTT = -(szz + srr) - pq;
+    const double hoopForce = axi ? volume * sigmaTT / (4.0 * g.meanR) : 0.0;
+    // Hourglass control.
+    const double chg =
+        hourglassDamping(m_options.hourglassCoefficient, el.rho[i], el.cs[i], volume, g.area);
+    m_hourglassRate[i] = chg;
+    const auto gamma = hourglassBase(s, g);
+    double qz = 0.0, qr = 0.0;
+    for (std::size_t a = 0; a < 4; ++a) {
+        qz += gamma[a] * s.vz[a];
+        qr += gamma[a] * s.vr[a];
+    }
+    for (std::size_t a = 0; a < 4; ++a) {
+        f[2 * a] = -volume * (sigmaZZ * g.bz[a] + srz * g.br[a]) - chg * qz * gamma[a];
+        f[2 * a + 1] =
+            -volume * (srz * g.bz[a] + sigmaRR * g.br[a]) - hoopForce - chg * qr * gamma[a];
+    }
+    // Element time step.
+    const double trace = m_volumetricRate[i];
+    const double lengthDt = g.area / g.maxDiagonal;
+    const double c = el.cs[i];
+    const double qSpeed = trace < 0.0 ? cq * lengthDt * std::fabs(trace) + cl * c : 0.0;
+    const double denom = qSpeed + std::sqrt(qSpeed * qSpeed + c * c);
+    if (denom > 0.0) {
+        vote.offer(lengthDt / denom, static_cast<int32_t>(i));
+    }
+}
+
+void FeSolid::finishAssembly(const std::vector<StepVote>& votes) {
     StepVote vote;
     vote.offer(m_referenceDt, -1);
     for (const auto& v : votes) {
@@ -457,6 +507,8 @@ void FeSolid::assembleForces() {
     m_limitingElement = vote.element;
 
     // Gather the corner forces per node in a fixed (element) order.
+    auto& nd = m_nodes;
+    const std::size_t nn = nd.size();
     const bool all = m_fullAssembly;
     m_fullAssembly = false;
     const std::size_t gatherCount = all ? nn : m_gatherNodes.size();
@@ -472,6 +524,19 @@ void FeSolid::assembleForces() {
         nd.fz[n] = fz;
         nd.fr[n] = fr;
     }
+}
+
+std::vector<double> FeSolid::erosionStrain() const {
+    std::vector<double> strain = m_elements.geometricStrain;
+    if (m_options.instantaneousErosionStrain) {
+        for (std::size_t i = 0; i < m_elements.size(); ++i) {
+            if (m_elements.alive[i]) {
+                strain[i] = instantaneousStrain(gather(m_nodes, m_elements, i), m_referenceShape[i],
+                                                m_options.axisymmetric);
+            }
+        }
+    }
+    return strain;
 }
 
 void FeSolid::restoreErosion(double energy, std::size_t count) {

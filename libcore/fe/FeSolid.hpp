@@ -57,6 +57,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace hvi::fe {
@@ -106,8 +107,12 @@ public:
     /// The elements the last update eroded, in ascending order.
     const std::vector<int32_t>& erodedThisUpdate() const { return m_erodedNow; }
     std::size_t evaluatedCount() const { return m_evaluated.size(); }
-    /// The nodes whose force the last assembly may have left non-zero (the nodes of the
-    /// elements assembled then or the time before); every other node's force is exactly
+    /// The erosion strain of every element: of its current shape for an alive element when
+    /// the strain is instantaneous (the update evaluates it only where erosion is possible),
+    /// otherwise (incremental, or eroded) the stored geometricStrain.
+    std::vector<double> erosionStrain() const;
+    /// The nodes whose force the last assembly may have left non-zero (the nodes of every
+    /// element evaluated since the start or resume); every other node's force is exactly
     /// zero. Null when any node may hold a force (a resumed run before its first update).
     const std::vector<int32_t>* forcedNodes() const {
         return m_fullAssembly ? nullptr : &m_gatherNodes;
@@ -127,9 +132,34 @@ public:
     void recountNodeElements();
 
 private:
+    /// The smallest stable time step offered, ties to the lowest element (thread-count free).
+    struct StepVote {
+        double dt = std::numeric_limits<double>::infinity();
+        int32_t element = -1;
+        void offer(double candidate, int32_t i) {
+            if (candidate < dt || (candidate == dt && i < element)) {
+                dt = candidate;
+                element = i;
+            }
+        }
+    };
+    /// Elements per tile of the update: its stages' arrays for a tile (about 40 doubles an
+    /// element) stay within a core's L2 cache between the stages.
+    static constexpr std::size_t kTileSize = 128;
+
     void selectEvaluated();
+    /// Adds a woken element, if alive, to the merged list, and its nodes to the gathered set.
+    void admit(int32_t element);
+    /// Steps 1-4 and 6 of update() for the listed elements (ascending).
+    void updateTile(std::span<const int32_t> tile, double dt,
+                    const solver::MaterialPackage& materials, StepVote& vote);
     /// Element forces at the current geometry and state, gathered per node; the time-step vote.
     void assembleForces();
+    /// Element i's corner forces (zeros when it is eroded or about to be) and its vote.
+    void elementForces(std::size_t i, StepVote& vote);
+    void zeroForcesIfFull();
+    /// The time step from the threads' votes, then each node's force from its elements'.
+    void finishAssembly(const std::vector<StepVote>& votes);
     void erode(std::size_t element);
 
     FeOptions m_options;
@@ -137,30 +167,30 @@ private:
     ElementSet m_elements;
     ElementRates m_rates;
     std::vector<double> m_erosionFactor;
+    std::vector<double> m_strainRatioLimit; ///< stretchRatioLimit(erosion factor) per body
     // Node -> elements adjacency (CSR, ascending element order): forces are gathered per node
     // in a fixed order, so the sums do not depend on the thread count.
     std::vector<int64_t> m_nodeElementOffset;
     std::vector<int32_t> m_nodeElements;
-    std::vector<double> m_elementForce;  ///< 8 per element: (fz, fr) of corners 0..3
-    std::vector<double> m_hourglassRate; ///< c_hg per element [mg/us], set in update()
-    std::vector<int32_t> m_evaluated;    ///< alive, non-dormant elements of this update
+    std::vector<double> m_elementForce;     ///< 8 per element: (fz, fr) of corners 0..3
+    std::vector<double> m_hourglassRate;    ///< c_hg per element [mg/us], set in update()
+    std::vector<int32_t> m_evaluated;       ///< alive, non-dormant elements of this update
+    std::vector<int32_t> m_woken, m_merged; ///< scratch of selectEvaluated()
+    bool m_erodedSinceSelection = false;    ///< the list holds eroded elements
     // The awake set only grows: an element wakes when one of its nodes first moves (or, at a
     // start or resume, when its material is out of its reference state) and stays awake.
     std::vector<uint8_t> m_elementAwake, m_nodeAwake;
     bool m_fullSelection = true;          ///< check every element's state (first update, resume)
     std::vector<double> m_volumetricRate; ///< tr D of the last update [1/us]
-    std::vector<double> m_previousEnergy, m_previousPressure, m_previousDeviator;
-    std::vector<double> m_volume, m_volumeChange; ///< swept volume [mm^3] and its last change
+    std::vector<double> m_volume;         ///< swept volume [mm^3]
     std::vector<double> m_referenceVolume, m_referenceDensity; ///< V0 [mm^3], rho0 [g/cm^3]
     /// Each element's reference shape (the instantaneous erosion strain's deformation gradient).
     std::vector<ReferenceShape> m_referenceShape;
-    std::vector<double> m_hourglassWork; ///< hourglass work of the last update [J]
-    std::vector<uint8_t> m_erode;        ///< inverted this update: erode
-    std::vector<int32_t> m_erodedNow;    ///< eroded by the last update
-    std::vector<int32_t> m_assembled;    ///< elements whose forces the last assembly wrote
-    std::vector<int32_t> m_gatherNodes;  ///< nodes whose force this assembly recomputes
-    std::vector<uint8_t> m_nodeMarked;   ///< scratch for m_gatherNodes (all 0 between uses)
-    bool m_fullAssembly = true;          ///< zero and gather everything (first time, resume)
+    std::vector<uint8_t> m_erode;       ///< to erode at the end of this update
+    std::vector<int32_t> m_erodedNow;   ///< eroded by the last update
+    std::vector<int32_t> m_gatherNodes; ///< nodes of every element evaluated so far
+    std::vector<uint8_t> m_nodeMarked;  ///< in m_gatherNodes
+    bool m_fullAssembly = true;         ///< zero and gather everything (first time, resume)
     double m_referenceDt = std::numeric_limits<double>::infinity(); ///< undisturbed elements
     double m_stableDt = 0.0;
     int32_t m_limitingElement = -1;

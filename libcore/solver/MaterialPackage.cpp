@@ -1,6 +1,6 @@
 #include "solver/MaterialPackage.hpp"
-#include "core/Parallel.hpp"
 
+#include "core/Parallel.hpp"
 #include "fe/ElementRates.hpp"
 #include "fe/FeMesh.hpp"
 #include "material/strength/JaumannRate.hpp"
@@ -35,11 +35,11 @@ void pressureOf(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdi
                 std::ptrdiff_t last, const int32_t* items) {
     const bool hasS = ps.hasStrength();
     const double shear = body.strength ? body.spec->shearModulus : 0.0;
-#pragma omp parallel for schedule(static) if (static_cast<std::size_t>(last - first) > kParallelMinItems)
-    for (std::ptrdiff_t k = first; k < last; ++k) {
+    parallelFor(static_cast<std::size_t>(last - first), [&](std::size_t slot) {
+        const auto k = first + static_cast<std::ptrdiff_t>(slot);
         const auto i = items ? static_cast<std::size_t>(items[k]) : static_cast<std::size_t>(k);
         if (!ps.alive[i]) {
-            continue;
+            return;
         }
         const double rho = std::max(ps.rho[i], body.minDensity);
         const material::EosState st = eos.evaluate(rho, ps.e[i]);
@@ -56,7 +56,7 @@ void pressureOf(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdi
         }
         ps.p[i] = p;
         ps.cs[i] = std::sqrt(std::max(c2, 0.0));
-    }
+    });
 }
 
 } // namespace
@@ -74,16 +74,16 @@ void MaterialPackage::updatePressure(Points& ps) const {
 }
 
 template <class Points>
-void MaterialPackage::updatePressure(Points& ps, const std::vector<int32_t>& items) const {
+void MaterialPackage::updatePressure(Points& ps, std::span<const int32_t> items) const {
     for (const auto& body : m_bodies) {
         if (body.count == 0) {
             continue;
         }
         // The body's slice of the sorted list.
-        const auto lo = std::lower_bound(items.begin(), items.end(),
-                                         static_cast<int32_t>(body.first));
-        const auto hi = std::lower_bound(lo, items.end(),
-                                         static_cast<int32_t>(body.first + body.count));
+        const auto lo =
+            std::lower_bound(items.begin(), items.end(), static_cast<int32_t>(body.first));
+        const auto hi =
+            std::lower_bound(lo, items.end(), static_cast<int32_t>(body.first + body.count));
         std::visit(
             [&](const auto& eos) {
                 pressureOf(ps, body, eos, lo - items.begin(), hi - items.begin(), items.data());
@@ -93,19 +93,17 @@ void MaterialPackage::updatePressure(Points& ps, const std::vector<int32_t>& ite
 }
 
 template <class Points, class Rates>
-void MaterialPackage::addStressRates(const Points& ps, const std::vector<int32_t>& active,
+void MaterialPackage::addStressRates(const Points& ps, std::span<const int32_t> active,
                                      Rates& rates) const {
     if (!ps.hasStrength()) {
         return;
     }
-    const std::size_t count = active.size();
-#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
-    for (std::size_t a = 0; a < count; ++a) {
+    parallelFor(active.size(), [&](std::size_t a) {
         const int32_t i = active[a];
         const BodyMaterial& body = m_bodies[static_cast<std::size_t>(ps.body[i])];
         if (!body.strength || ps.damage[i] >= 1.0 || ps.rho[i] < body.minDensity) {
             rates.dszz[i] = rates.dsrr[i] = rates.dsrz[i] = 0.0;
-            continue;
+            return;
         }
         const StressDeviator s{ps.szz[i], ps.srr[i], ps.srz[i]};
         const material::VelocityGradient2D l{rates.dvzDz[i], rates.dvzDr[i], rates.dvrDz[i],
@@ -115,30 +113,27 @@ void MaterialPackage::addStressRates(const Points& ps, const std::vector<int32_t
         rates.dszz[i] = ds.zz;
         rates.dsrr[i] = ds.rr;
         rates.dsrz[i] = ds.rz;
-    }
+    });
 }
 
 template <class Points, class Rates>
 void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
-                                      const std::vector<int32_t>& active) const {
+                                      std::span<const int32_t> active) const {
     if (!ps.hasStrength()) {
         return;
     }
-    const std::size_t count = active.size();
-#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
-    for (std::size_t a = 0; a < count; ++a) {
+    parallelFor(active.size(), [&](std::size_t a) {
         const int32_t i = active[a];
         const BodyMaterial& body = m_bodies[static_cast<std::size_t>(ps.body[i])];
         if (!body.strength) {
-            continue;
+            return;
         }
         StressDeviator s{ps.szz[i], ps.srr[i], ps.srz[i]};
         if (ps.damage[i] >= 1.0 || ps.rho[i] < body.minDensity) {
             s = StressDeviator{};
         } else {
             const material::MaterialSpec& spec = *body.spec;
-            const double tStar =
-                spec.thermal ? spec.thermal->homologousFromEnergy(ps.e[i]) : 0.0;
+            const double tStar = spec.thermal ? spec.thermal->homologousFromEnergy(ps.e[i]) : 0.0;
             const double rate = rates.strainRate[i];
             const double yield = std::visit(
                 [&](const auto& model) -> double {
@@ -171,22 +166,21 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
         ps.szz[i] = s.zz;
         ps.srr[i] = s.rr;
         ps.srz[i] = s.rz;
-    }
+    });
 }
 
 // The two kinds of material points.
 template void MaterialPackage::updatePressure(sph::ParticleSet&) const;
 template void MaterialPackage::updatePressure(fe::ElementSet&) const;
-template void MaterialPackage::updatePressure(sph::ParticleSet&, const std::vector<int32_t>&) const;
-template void MaterialPackage::updatePressure(fe::ElementSet&, const std::vector<int32_t>&) const;
-template void MaterialPackage::addStressRates(const sph::ParticleSet&,
-                                              const std::vector<int32_t>&,
+template void MaterialPackage::updatePressure(sph::ParticleSet&, std::span<const int32_t>) const;
+template void MaterialPackage::updatePressure(fe::ElementSet&, std::span<const int32_t>) const;
+template void MaterialPackage::addStressRates(const sph::ParticleSet&, std::span<const int32_t>,
                                               sph::ParticleRates&) const;
-template void MaterialPackage::addStressRates(const fe::ElementSet&, const std::vector<int32_t>&,
+template void MaterialPackage::addStressRates(const fe::ElementSet&, std::span<const int32_t>,
                                               fe::ElementRates&) const;
 template void MaterialPackage::applyPlasticity(sph::ParticleSet&, const sph::ParticleRates&,
-                                               const std::vector<int32_t>&) const;
+                                               std::span<const int32_t>) const;
 template void MaterialPackage::applyPlasticity(fe::ElementSet&, const fe::ElementRates&,
-                                               const std::vector<int32_t>&) const;
+                                               std::span<const int32_t>) const;
 
 } // namespace hvi::solver

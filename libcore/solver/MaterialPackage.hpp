@@ -15,6 +15,7 @@
 #include "material/MaterialSpec.hpp"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace hvi::solver {
@@ -22,9 +23,9 @@ namespace hvi::solver {
 /// What one body needs from its material, chosen once.
 struct BodyMaterial {
     const material::MaterialSpec* spec = nullptr;
-    bool strength = false;    ///< the body carries deviatoric stress (material and scene agree)
-    double minDensity = 0.0;  ///< below it a particle carries no stress [g/cm^3]
-    double maxDensity = 0.0;  ///< particle density ceiling [g/cm^3] (densityCeiling())
+    bool strength = false;   ///< the body carries deviatoric stress (material and scene agree)
+    double minDensity = 0.0; ///< below it a particle carries no stress [g/cm^3]
+    double maxDensity = 0.0; ///< particle density ceiling [g/cm^3] (densityCeiling())
     std::size_t first = 0, count = 0; ///< index range in the body's point set (particles or
                                       ///< elements; count 0 in the other set)
 };
@@ -51,20 +52,20 @@ public:
     template <class Points>
     void updatePressure(Points& points) const;
     /// The same for the listed points only (ascending indices), e.g. the elements an FE
-    /// update evaluated: the rest keep their pressure.
+    /// update evaluated: the rest keep their pressure. The loops over a list are threaded
+    /// only when it is long (parallelFor), so a caller may pass short slices from its own
+    /// parallel region.
     template <class Points>
-    void updatePressure(Points& points, const std::vector<int32_t>& sortedItems) const;
+    void updatePressure(Points& points, std::span<const int32_t> sortedItems) const;
 
     /// dS/dt (Jaumann rate with the hoop strain rate) for the points listed.
     template <class Points, class Rates>
-    void addStressRates(const Points& points, const std::vector<int32_t>& active,
-                        Rates& rates) const;
+    void addStressRates(const Points& points, std::span<const int32_t> active, Rates& rates) const;
 
     /// Radial return onto the Johnson-Cook yield surface, plastic strain, damage
     /// accumulation and the failed / under-dense states, after the deviator was updated.
     template <class Points, class Rates>
-    void applyPlasticity(Points& points, const Rates& rates,
-                         const std::vector<int32_t>& active) const;
+    void applyPlasticity(Points& points, const Rates& rates, std::span<const int32_t> active) const;
 
     const std::vector<BodyMaterial>& bodies() const { return m_bodies; }
 

@@ -53,8 +53,9 @@ io::ParticleFieldsView viewOf(const sph::ParticleSet& ps, std::vector<double>& d
 }
 
 /// The FE node and element fields, viewed from the FE package's arrays (the element state
-/// arrays that a strengthless scene lacks stay empty and are left out).
-io::FeFieldsView feViewOf(const fe::FeSolid& fe) {
+/// arrays that a strengthless scene lacks stay empty and are left out) and the erosion strain
+/// of the current shapes (fe.erosionStrain()).
+io::FeFieldsView feViewOf(const fe::FeSolid& fe, const std::vector<double>& erosionStrain) {
     io::FeFieldsView v;
     const auto& nd = fe.nodes();
     const auto& el = fe.elements();
@@ -67,7 +68,7 @@ io::FeFieldsView feViewOf(const fe::FeSolid& fe) {
     v.elements.alive = el.alive;
     v.elements.damage = el.damage;
     v.elements.plasticStrain = el.plasticStrain;
-    v.elements.geometricStrain = el.geometricStrain;
+    v.elements.geometricStrain = erosionStrain;
     v.elements.pressure = el.p;
     v.elements.density = el.rho;
     v.elements.bodyId = el.body;
@@ -377,7 +378,8 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     long lastSnapshotStep = -1;
     auto snapshot = [&]() {
         if (const fe::FeSolid* fe = sim.finiteElements()) {
-            const io::FeFieldsView feView = feViewOf(*fe);
+            const std::vector<double> erosionStrain = fe->erosionStrain();
+            const io::FeFieldsView feView = feViewOf(*fe, erosionStrain);
             writer.writeSnapshot(sim.time(), sim.step(), viewOf(sim.particles(), deviator),
                                  &feView);
         } else {

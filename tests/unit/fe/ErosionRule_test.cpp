@@ -74,7 +74,7 @@ Outcome run(double speed, double time) {
     test::runUntil(sim, time, [&](const solver::Simulation&) {
         if (el.alive[centre]) {
             out.minDensityRatio = std::min(out.minDensityRatio, el.rho[centre] / rho0);
-            out.geometricStrain = el.geometricStrain[centre];
+            out.geometricStrain = sim.finiteElements()->erosionStrain()[centre];
         }
     });
     out.alive = el.alive[centre] != 0;

@@ -1,7 +1,8 @@
 // The instantaneous erosion strain (fe/ErosionStrain.hpp) against closed forms: zero for
 // rigid motions and for pure volume change, (2/3) |ln lambda| for a stretch lambda along one
 // in-plane direction, |gamma| / sqrt(3) to first order in a small simple shear gamma, and the
-// hoop stretch of a ring moved outwards; +inf for an inverted element. And in an FE run: an
+// hoop stretch of a ring moved outwards; +inf for an inverted element; the cheap bound that
+// skips the logarithms never clears an element at its erosion limit. And in an FE run: an
 // element driven to and fro (elastic ringing) keeps an instantaneous strain of the size of
 // its amplitude, while the incremental measure grows with every cycle.
 #include "SceneRun.hpp"
@@ -9,7 +10,9 @@
 #include "fe/ErosionStrain.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <gtest/gtest.h>
+#include <random>
 #include <string>
 
 using namespace hvi;
@@ -48,9 +51,9 @@ TEST(ErosionStrain, RigidMotionAndVolumeChangeGiveZero) {
                 1e-14);
     // Axisymmetric: scaling the ring by 1.3 about the origin stretches it equally in z, r and
     // the hoop direction, a pure volume change.
-    EXPECT_NEAR(fe::instantaneousStrain(mapped(ref, 1.3, 0.0, 0.0, 1.3, 0.0, 0.3 * ref.r[0]),
-                                        shape, true),
-                0.0, 1e-14);
+    EXPECT_NEAR(
+        fe::instantaneousStrain(mapped(ref, 1.3, 0.0, 0.0, 1.3, 0.0, 0.3 * ref.r[0]), shape, true),
+        0.0, 1e-14);
 }
 
 TEST(ErosionStrain, UniaxialStretchAndSimpleShear) {
@@ -90,6 +93,46 @@ TEST(ErosionStrain, InvertedElementIsInfinite) {
         fe::instantaneousStrain(mapped(ref, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0), shape, false)));
 }
 
+TEST(ErosionStrain, CheapBoundNeverHidesAnErosion) {
+    // strainCertainlyBelow() lets the update skip the logarithms. Over random deformations
+    // (stretches up to e^{+-2}, rotations, shears, hoop stretches, inversions) it must never
+    // clear an element whose strain reaches the limit, and must clear every element more
+    // than ln(4)/3 below it (the bound's documented slack), or it would save nothing.
+    const QuadState ref = square(2.0);
+    const auto shape = fe::referenceShape(ref);
+    std::mt19937_64 random(20261123);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const double slack = std::log(4.0) / 3.0;
+    int cleared = 0, evaluated = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const double l1 = std::exp(2.0 * unit(random)), l2 = std::exp(2.0 * unit(random));
+        const double angle = 3.2 * unit(random), shear = unit(random);
+        const double c = std::cos(angle), sn = std::sin(angle);
+        // F = R(angle) diag(l1, l2) + shear e_z (x) e_r, sometimes inverted (l1 < 0).
+        const double sign = trial % 50 == 0 ? -1.0 : 1.0;
+        const double fzz = c * sign * l1, fzr = -sn * l2 + shear, frz = sn * sign * l1,
+                     frr = c * l2;
+        const double tr = 0.5 * ref.r[0] * unit(random);
+        const QuadState q = mapped(ref, fzz, fzr, frz, frr, 0.0, tr);
+        for (const bool axi : {false, true}) {
+            const fe::Stretch s = fe::stretchOf(q, shape, axi);
+            const double strain = fe::equivalentLogStrain(s);
+            for (const double limit : {0.5, 1.0, 1.5}) {
+                const bool below = fe::strainCertainlyBelow(s, fe::stretchRatioLimit(limit));
+                ASSERT_FALSE(below && !(strain < limit))
+                    << "trial " << trial << ": strain " << strain << " cleared for limit " << limit;
+                if (strain < limit - slack) {
+                    ASSERT_TRUE(below) << "trial " << trial << ": strain " << strain
+                                       << " not cleared for limit " << limit;
+                }
+                cleared += below;
+                ++evaluated;
+            }
+        }
+    }
+    std::printf("cleared without logarithms: %d of %d\n", cleared, evaluated);
+}
+
 namespace {
 
 /// A free FE Al bar (planar, 2 mm x 0.2 mm) whose nodes are given a velocity field that
@@ -126,7 +169,7 @@ double ringingStrain(const std::string& measure, double time) {
     sim.refreshRates();
     test::runUntil(sim, time);
     double largest = 0.0;
-    for (const double g : sim.finiteElements()->elements().geometricStrain) {
+    for (const double g : sim.finiteElements()->erosionStrain()) {
         largest = std::max(largest, g);
     }
     return largest;
