@@ -143,7 +143,6 @@ void FeSolid::selectEvaluated() {
     if (m_woken.empty() && !m_erodedSinceSelection) {
         return;
     }
-    m_erodedSinceSelection = false;
     std::sort(m_woken.begin(), m_woken.end());
     // Merge the alive elements of the kept list and the woken ones (both ascending).
     m_merged.clear();
@@ -160,18 +159,37 @@ void FeSolid::selectEvaluated() {
         admit(m_woken[k]);
     }
     m_evaluated.swap(m_merged);
+    // The gathered nodes are those of the listed elements: an element that erodes writes
+    // zero corner forces in that same update, so a node whose elements have all left the
+    // list already holds its final (zero) force. After an erosion the set is rebuilt, so it
+    // does not keep growing with the eroded debris of a perforation.
+    if (m_erodedSinceSelection) {
+        m_erodedSinceSelection = false;
+        for (const int32_t n : m_gatherNodes) {
+            m_nodeMarked[static_cast<std::size_t>(n)] = 0;
+        }
+        m_gatherNodes.clear();
+        for (const int32_t e : m_evaluated) {
+            gatherNodesOf(static_cast<std::size_t>(e));
+        }
+    } else {
+        for (const int32_t e : m_woken) {
+            if (el.alive[static_cast<std::size_t>(e)]) {
+                gatherNodesOf(static_cast<std::size_t>(e));
+            }
+        }
+    }
 }
 
 void FeSolid::admit(int32_t element) {
-    const auto i = static_cast<std::size_t>(element);
-    if (!m_elements.alive[i]) {
-        return;
+    if (m_elements.alive[static_cast<std::size_t>(element)]) {
+        m_merged.push_back(element);
     }
-    m_merged.push_back(element);
-    // Its nodes join the gathered set for good (a node of an element that later erodes
-    // gathers zeros from it, which is exact).
+}
+
+void FeSolid::gatherNodesOf(std::size_t element) {
     for (int a = 0; a < 4; ++a) {
-        const int32_t n = m_elements.node(i, a);
+        const int32_t n = m_elements.node(element, a);
         if (!m_nodeMarked[static_cast<std::size_t>(n)]) {
             m_nodeMarked[static_cast<std::size_t>(n)] = 1;
             m_gatherNodes.push_back(n);
@@ -420,9 +438,9 @@ void FeSolid::computeForces(const solver::MaterialPackage& materials) {
 }
 
 void FeSolid::zeroForcesIfFull() {
-    // Only evaluated elements can hold a force: each writes its corner forces (zeros once it
-    // has eroded, after which it leaves the list), and only the nodes of elements ever
-    // evaluated are gathered (every other node's force is, and stays, zero). The first
+    // Only evaluated elements can hold a force: each writes its corner forces (zeros in the
+    // update that erodes it, after which it leaves the list), and only the nodes of the listed
+    // elements are gathered (every other node's force is, and stays, zero). The first
     // assembly (and the first after a resume) covers all.
     if (m_fullAssembly) {
         std::fill(m_elementForce.begin(), m_elementForce.end(), 0.0);

@@ -111,9 +111,9 @@ public:
     /// the strain is instantaneous (the update evaluates it only where erosion is possible),
     /// otherwise (incremental, or eroded) the stored geometricStrain.
     std::vector<double> erosionStrain() const;
-    /// The nodes whose force the last assembly may have left non-zero (the nodes of every
-    /// element evaluated since the start or resume); every other node's force is exactly
-    /// zero. Null when any node may hold a force (a resumed run before its first update).
+    /// The nodes whose force the last assembly may have left non-zero (the nodes of the
+    /// elements it evaluated); every other node's force is exactly zero. Null when any node may
+    /// hold a force (a resumed run before its first update).
     const std::vector<int32_t>* forcedNodes() const {
         return m_fullAssembly ? nullptr : &m_gatherNodes;
     }
@@ -148,8 +148,10 @@ private:
     static constexpr std::size_t kTileSize = 128;
 
     void selectEvaluated();
-    /// Adds a woken element, if alive, to the merged list, and its nodes to the gathered set.
+    /// Adds a woken element, if alive, to the merged list.
     void admit(int32_t element);
+    /// Adds an element's nodes to the gathered set.
+    void gatherNodesOf(std::size_t element);
     /// Steps 1-4 and 6 of update() for the listed elements (ascending).
     void updateTile(std::span<const int32_t> tile, double dt,
                     const solver::MaterialPackage& materials, StepVote& vote);
@@ -188,7 +190,7 @@ private:
     std::vector<ReferenceShape> m_referenceShape;
     std::vector<uint8_t> m_erode;       ///< to erode at the end of this update
     std::vector<int32_t> m_erodedNow;   ///< eroded by the last update
-    std::vector<int32_t> m_gatherNodes; ///< nodes of every element evaluated so far
+    std::vector<int32_t> m_gatherNodes; ///< nodes of the evaluated elements
     std::vector<uint8_t> m_nodeMarked;  ///< in m_gatherNodes
     bool m_fullAssembly = true;         ///< zero and gather everything (first time, resume)
     double m_referenceDt = std::numeric_limits<double>::infinity(); ///< undisturbed elements
