@@ -8,6 +8,7 @@
 // The scene has more awake elements than the threading threshold, erosion (eroded elements
 // become particles) and contact, so every FE loop runs threaded and every path is covered.
 #include "SceneRun.hpp"
+#include "SyntheticRun.hpp"
 #include "core/Parallel.hpp"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,8 @@ namespace {
 
 /// A 1 mm Al sphere (SPH) at 3 km/s on a 0.5 mm Al FE plate of 8 mm radius, 0.02 mm.
 json plateScene() {
+    json plate = test::plateBody("plate", "bumper", 0.0, 0.5, 8.0);
+    plate["discretization"] = "fe";
     return {{"geometry", "axisymmetric"},
             {"sph", {{"particle_spacing_mm", 0.02}}},
             {"fe", {{"element_size_mm", 0.02}}},
@@ -28,21 +31,7 @@ json plateScene() {
               {"stop_debris_speed_km_s", 0.0},
               {"stop_no_new_penetration_us", 0.0}}},
             {"domain", {{"radius_mm", 8.5}}},
-            {"bodies",
-             {{{"name", "projectile"},
-               {"role", "projectile"},
-               {"material", "Al6061-T6"},
-               {"shape", {{"type", "sphere"}, {"center_z_mm", -0.52}, {"radius_mm", 0.5}}},
-               {"velocity", {{"z_km_s", 3.0}}}},
-              {{"name", "plate"},
-               {"role", "bumper"},
-               {"material", "Al6061-T6"},
-               {"discretization", "fe"},
-               {"shape",
-                {{"type", "plate"},
-                 {"z_front_mm", 0.0},
-                 {"thickness_mm", 0.5},
-                 {"outer_radius_mm", 8.0}}}}}}};
+            {"bodies", {test::projectileBody(0.5, 3.0), plate}}};
 }
 
 struct Outcome {

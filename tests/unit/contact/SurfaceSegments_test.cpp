@@ -3,6 +3,7 @@
 // Checked against an independent count over a map of every element edge, through rounds of
 // random erosion of a meshed plate.
 #include "SceneRun.hpp"
+#include "SyntheticRun.hpp"
 #include "contact/KinematicContact.hpp"
 #include "fe/FeMesh.hpp"
 #include "sph/ParticleSet.hpp"
@@ -41,24 +42,11 @@ std::size_t boundaryEdges(const fe::ElementSet& el, const fe::NodeSet& nd, bool 
 } // namespace
 
 TEST(SurfaceSegments, AreTheEdgesOfExactlyOneAliveElementThroughErosion) {
-    const auto scene = test::makeScene(
-        {{"geometry", "axisymmetric"},
-         {"sph", {{"particle_spacing_mm", 0.1}}},
-         {"bodies",
-          {{{"name", "projectile"},
-            {"role", "projectile"},
-            {"material", "Al6061-T6"},
-            {"shape", {{"type", "sphere"}, {"center_z_mm", -2.0}, {"radius_mm", 0.5}}},
-            {"velocity", {{"z_km_s", 1.0}}}},
-           {{"name", "plate"},
-            {"role", "bumper"},
-            {"material", "Al6061-T6"},
-            {"discretization", "fe"},
-            {"shape",
-             {{"type", "plate"},
-              {"z_front_mm", 0.0},
-              {"thickness_mm", 1.0},
-              {"outer_radius_mm", 2.0}}}}}}});
+    json plate = test::plateBody("plate", "bumper", 0.0, 1.0, 2.0);
+    plate["discretization"] = "fe";
+    const auto scene = test::makeScene({{"geometry", "axisymmetric"},
+                                        {"sph", {{"particle_spacing_mm", 0.1}}},
+                                        {"bodies", {test::projectileBody(0.5, 1.0), plate}}});
     fe::NodeSet nodes;
     fe::ElementSet elements;
     const auto mesh = fe::meshBody(scene.bodies[1], 1, 2.703, 0.0, true, nodes, elements);
