@@ -174,6 +174,22 @@ void KinematicContact::rebuildSegments(const fe::ElementSet& el, const fe::NodeS
         m_segElement.push_back(static_cast<int32_t>(element));
         m_surfaceNode[a] = m_surfaceNode[b] = 1;
     }
+    // Link the segments into chains through the nodes they share (a node where more than one
+    // segment starts or ends, a pinch left by erosion, links none).
+    const std::size_t ns = m_segA.size();
+    std::vector<int32_t> startingAt(nd.size(), -1), endingAt(nd.size(), -1);
+    constexpr int32_t kSeveral = -2;
+    for (std::size_t s = 0; s < ns; ++s) {
+        auto note = [&](int32_t& slot) { slot = slot == -1 ? static_cast<int32_t>(s) : kSeveral; };
+        note(startingAt[static_cast<std::size_t>(m_segA[s])]);
+        note(endingAt[static_cast<std::size_t>(m_segB[s])]);
+    }
+    m_segNext.assign(ns, -1);
+    m_segPrev.assign(ns, -1);
+    for (std::size_t s = 0; s < ns; ++s) {
+        m_segNext[s] = std::max(startingAt[static_cast<std::size_t>(m_segB[s])], -1);
+        m_segPrev[s] = std::max(endingAt[static_cast<std::size_t>(m_segA[s])], -1);
+    }
 }
 
 void KinematicContact::resolve(sph::ParticleSet& ps, const ParticleHalfStep& half,
@@ -259,6 +275,11 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
             cellSize);
     }
 
+    // A node held on the axis takes no radial impulse: the axis carries it (radial momentum
+    // is not conserved in axisymmetry; z-momentum, the conserved one, is unaffected).
+    auto radialFreedomOf = [&](std::size_t node) {
+        return m_options.axisymmetric && nd.onAxis[node] ? 0.0 : 1.0;
+    };
     // The state of a slave, read or written through one accessor.
     struct Slave {
         double* z;
@@ -268,17 +289,21 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         double mass, radius;
         int32_t body;
         bool free;
+        /// 0 for a node held on the axis (axisymmetric: it moves along z only), else 1.
+        double radialFreedom;
     };
     auto slaveAt = [&](std::size_t k) {
         const bool isParticle = k < np;
         const std::size_t idx = isParticle ? k : static_cast<std::size_t>(slaveNodes[k - np]);
         Slave s{};
         if (isParticle) {
-            s = {&ps.z[idx],   &ps.r[idx], &(*half.vz)[idx], &(*half.vr)[idx],
-                 ps.mass[idx], 0.0,        ps.body[idx],     false};
+            s = {&ps.z[idx],       &ps.r[idx],   &(*half.vz)[idx],
+                 &(*half.vr)[idx], ps.mass[idx], 0.0,
+                 ps.body[idx],     false,        1.0};
         } else {
-            s = {&nd.z[idx],   &nd.r[idx], &nd.vz[idx],  &nd.vr[idx],
-                 nd.mass[idx], 0.0,        nd.body[idx], nd.elementCount[idx] == 0};
+            s = {&nd.z[idx],          &nd.r[idx], &nd.vz[idx],  &nd.vr[idx],
+                 nd.mass[idx],        0.0,        nd.body[idx], nd.elementCount[idx] == 0,
+                 radialFreedomOf(idx)};
         }
         const double size = m_bodies[static_cast<std::size_t>(s.body)].size;
         s.radius = isParticle ? 0.5 * size : 0.0;
@@ -401,17 +426,21 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         return 0.5 * m * (vz * vz + vr * vr - before);
     };
     struct Constraint {
-        std::size_t slave = 0;           ///< index into the slave list
-        Slave sl{};                      ///< its state (pointers into the arrays)
-        int32_t target = 0;              ///< segment, or -1 - particle index
-        std::size_t a = 0, b = 0, j = 0; ///< master nodes, or master particle
-        double nz = 0.0, nr = 0.0, wa = 0.0, wb = 0.0, invSum = 0.0, allowed = 0.0;
-        int32_t masterElement = -1;
+        std::size_t slave = 0; ///< index into the slave list
+        Slave sl{};            ///< its state (pointers into the arrays)
+        int32_t target = 0;    ///< segment, or -1 - particle index
+        std::size_t j = 0;     ///< master particle
+        /// Master nodes and their shares (footNodes), and the master segments' shares of
+        /// the heat (footSegments), from these offsets on.
+        std::size_t nodeFirst = 0, nodeCount = 0, segmentFirst = 0, segmentCount = 0;
+        double nz = 0.0, nr = 0.0, invSum = 0.0, allowed = 0.0;
         double impulse = 0.0; ///< accumulated over the passes, >= 0
         double energy = 0.0;  ///< kinetic-energy change of its kicks [J]
         bool kicked = false;
     };
     std::vector<Constraint> constraints;
+    std::vector<Share> footNodes, footSegments, nodeShares, segmentShares;
+    const SurfaceChain chain{m_segA, m_segB, m_segNext, m_segPrev, nd.z, nd.r};
     for (std::size_t k = 0; k < slaveCount; ++k) {
         const SlaveContacts& c = found[k];
         m_stableDt = std::min(m_stableDt, c.dt);
@@ -425,19 +454,31 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
             con.sl = sl;
             con.target = c.target[static_cast<std::size_t>(q)];
             double gap = 0.0;
-            con.invSum = 1.0 / sl.mass;
             if (con.target >= 0) {
                 const auto seg = static_cast<std::size_t>(con.target);
                 const SegmentHit h = hit(*sl.z, *sl.r, seg);
-                con.a = static_cast<std::size_t>(m_segA[seg]);
-                con.b = static_cast<std::size_t>(m_segB[seg]);
                 con.nz = h.nz;
                 con.nr = h.nr;
+                con.invSum = (h.nz * h.nz + sl.radialFreedom * h.nr * h.nr) / sl.mass;
                 gap = h.gap - sl.radius;
-                con.wa = 1.0 - h.xi;
-                con.wb = h.xi;
-                con.invSum += con.wa * con.wa / nd.mass[con.a] + con.wb * con.wb / nd.mass[con.b];
-                con.masterElement = m_segElement[seg];
+                // A particle presses on its footprint, a node on a point.
+                const double halfWidth = k < np && m_options.smoothingLengthFactor > 0.0
+                                             ? 0.5 * ps.h[k] / m_options.smoothingLengthFactor
+                                             : 0.0;
+                footprintShares(chain, con.target, h.xi, halfWidth, m_options.axisymmetric,
+                                nodeShares, segmentShares);
+                con.nodeFirst = footNodes.size();
+                con.nodeCount = nodeShares.size();
+                con.segmentFirst = footSegments.size();
+                con.segmentCount = segmentShares.size();
+                for (const Share& n : nodeShares) {
+                    const auto node = static_cast<std::size_t>(n.index);
+                    con.invSum += n.weight * n.weight *
+                                  (h.nz * h.nz + radialFreedomOf(node) * h.nr * h.nr) /
+                                  nd.mass[node];
+                    footNodes.push_back(n);
+                }
+                footSegments.insert(footSegments.end(), segmentShares.begin(), segmentShares.end());
             } else {
                 con.j = static_cast<std::size_t>(-1 - con.target);
                 const SegmentHit h = particleHit(sl, con.j);
@@ -447,7 +488,8 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
                 con.nz = h.nz;
                 con.nr = h.nr;
                 gap = h.gap;
-                con.invSum += 1.0 / ps.mass[con.j];
+                con.invSum =
+                    (h.nz * h.nz + sl.radialFreedom * h.nr * h.nr) / sl.mass + 1.0 / ps.mass[con.j];
             }
             const double size = m_bodies[static_cast<std::size_t>(sl.body)].size;
             // Touching (within a hundredth of the slave body's spacing, so a pair resting on
@@ -488,8 +530,13 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
             const Slave& sl = con.sl;
             double vn = 0.0;
             if (con.target >= 0) {
-                vn = (*sl.vz - (con.wa * nd.vz[con.a] + con.wb * nd.vz[con.b])) * con.nz +
-                     (*sl.vr - (con.wa * nd.vr[con.a] + con.wb * nd.vr[con.b])) * con.nr;
+                double vmz = 0.0, vmr = 0.0;
+                for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
+                    const auto node = static_cast<std::size_t>(footNodes[q].index);
+                    vmz += footNodes[q].weight * nd.vz[node];
+                    vmr += footNodes[q].weight * nd.vr[node];
+                }
+                vn = (*sl.vz - vmz) * con.nz + (*sl.vr - vmr) * con.nr;
             } else {
                 vn = (*sl.vz - (*half.vz)[con.j]) * con.nz + (*sl.vr - (*half.vr)[con.j]) * con.nr;
             }
@@ -501,11 +548,14 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
             con.impulse = wanted;
             con.kicked = true;
             largestChange = std::max(largestChange, std::fabs(change) * con.invSum);
-            con.energy += kick(*sl.vz, *sl.vr, sl.mass, change / sl.mass, con.nz, con.nr);
+            con.energy +=
+                kick(*sl.vz, *sl.vr, sl.mass, change / sl.mass, con.nz, sl.radialFreedom * con.nr);
             if (con.target >= 0) {
-                for (const auto& [node, w] : {std::pair{con.a, con.wa}, std::pair{con.b, con.wb}}) {
+                for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
+                    const auto node = static_cast<std::size_t>(footNodes[q].index);
                     con.energy += kick(nd.vz[node], nd.vr[node], nd.mass[node],
-                                       -change * w / nd.mass[node], con.nz, con.nr);
+                                       -change * footNodes[q].weight / nd.mass[node], con.nz,
+                                       radialFreedomOf(node) * con.nr);
                 }
             } else {
                 con.energy += kick((*half.vz)[con.j], (*half.vr)[con.j], ps.mass[con.j],
@@ -559,16 +609,29 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
                                      : slaveIsFree
                                          ? nd.mass[idx]
                                          : el.mass[static_cast<std::size_t>(m_nodeElement[idx])];
-        const double masterHeatMass = con.target < 0 ? ps.mass[con.j]
-                                      : con.masterElement >= 0
-                                          ? el.mass[static_cast<std::size_t>(con.masterElement)]
-                                          : 0.0;
+        // A footprint's master side is the elements of its segments, each taking the
+        // share of the impulse its segment took.
+        auto segmentElement = [&](std::size_t q) {
+            return static_cast<std::size_t>(
+                m_segElement[static_cast<std::size_t>(footSegments[q].index)]);
+        };
+        double masterHeatMass = 0.0;
+        if (con.target < 0) {
+            masterHeatMass = ps.mass[con.j];
+        } else {
+            for (std::size_t q = con.segmentFirst; q < con.segmentFirst + con.segmentCount; ++q) {
+                masterHeatMass += footSegments[q].weight * el.mass[segmentElement(q)];
+            }
+        }
         const double slaveShare = heat * slaveHeatMass / (slaveHeatMass + masterHeatMass);
         const double masterShare = heat - slaveShare;
         if (con.target < 0) {
             heatParticle(con.j, masterShare);
-        } else if (con.masterElement >= 0) {
-            heatElement(con.masterElement, masterShare);
+        } else {
+            for (std::size_t q = con.segmentFirst; q < con.segmentFirst + con.segmentCount; ++q) {
+                heatElement(static_cast<int32_t>(segmentElement(q)),
+                            masterShare * footSegments[q].weight);
+            }
         }
         if (isParticle) {
             heatParticle(idx, slaveShare);

@@ -17,7 +17,11 @@
 // approaching it with normal speed -v_n larger than the gap it may still close, (g - R)/dt
 // (0 once touching), gets the normal impulse that brings the approach down to that,
 //     J = (-v_n - max(g - R, 0)/dt) / (1/m_s + (1-xi)^2/m_A + xi^2/m_B),
-// applied as +J n to the slave and -J (1-xi) n, -J xi n to A and B (a slave slightly inside,
+// applied as +J n to the slave and -J (1-xi) n, -J xi n to A and B. A particle spreads its
+// impulse over its footprint instead (contact/Footprint.hpp): the master velocity is
+// sum_k w_k v_k over the footprint's nodes, the denominator 1/m_s + sum_k w_k^2/m_k, and
+// node k takes -J w_k n. Nodes held on the axis take no radial impulse (they move along z
+// only), so contact never moves them off it. (A slave slightly inside,
 // R - g below 2 % of its spacing, which the iteration below can leave when it stops short,
 // is made to separate at 0.2 (R - g)/dt, so overlaps never build up;
 // a deeper one, left by erosion exposing a surface, is only kept from growing). So the drift never
@@ -50,6 +54,7 @@
 // Units: mm, us, mg (km/s, J).
 #pragma once
 
+#include "contact/Footprint.hpp"
 #include "fe/FeMesh.hpp"
 #include "sph/ParticleSet.hpp"
 
@@ -61,6 +66,9 @@ namespace hvi::contact {
 
 struct ContactOptions {
     bool axisymmetric = true;
+    /// h / spacing of the particles: a particle's footprint on a surface is h / this wide
+    /// (contact/Footprint.hpp). 0: particles press on a point, as nodes do.
+    double smoothingLengthFactor = 0.0;
 };
 
 /// The particles' half-step state (the leapfrog's v^{n+1/2} and e^{n+1/2} arrays).
@@ -127,6 +135,8 @@ private:
     std::vector<ContactBody> m_bodies;
     // Master segments: nodes A -> B with the element interior on the left.
     std::vector<int32_t> m_segA, m_segB, m_segBody, m_segElement;
+    // The surface chains: the segment starting where each ends, ending where each starts.
+    std::vector<int32_t> m_segNext, m_segPrev;
     // The mesh's edges (CSR by node pair, ascending): the elements using each, and at which
     // corner the edge starts (corner -> corner + 1).
     std::vector<int32_t> m_edgeOffset, m_edgeElement;

@@ -112,6 +112,7 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
                                              std::move(erosionFactors));
         contact::ContactOptions contactOptions;
         contactOptions.axisymmetric = axi;
+        contactOptions.smoothingLengthFactor = m_scene.sph.smoothingLengthFactor;
         m_contact =
             std::make_unique<contact::KinematicContact>(contactOptions, std::move(contactBodies));
     }

@@ -165,19 +165,20 @@ TEST(FeContact, FeBlockReboundsFromFePlate) {
     check(drop(true));
 }
 
-// A uniform impact loads the axis like the rest of the surface (axisymmetric, FE on FE): an
-// Al plate 0.4 mm thick and 1.5 mm in radius at 2 km/s on an Al plate 0.6 mm thick, 0.04 mm
-// elements on both, 0.25 us (before the release from the flyer's edge reaches the axis). Far
-// from the edges the impact is one-dimensional, so every element of the target's front row
-// inside r = 0.6 mm should reach the same plastic strain. The contact impulses used to be
-// resolved in a single pass in slave order, which left the struck surface's nodes at
-// velocities that followed the order (0.891 km/s on the axis to 0.848 km/s at r = 0.28 mm
-// just after touching) and the axis element at 0.42 plastic strain against 0.24 beside it
-// (+71 %). The impulses solved together give +4 %; the bar is 15 %.
-TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
+namespace {
+
+// A uniform impact loads the axis like the rest of the surface (axisymmetric): an Al plate
+// 0.4 mm thick and 1.5 mm in radius at 2 km/s on an FE Al plate 0.6 mm thick, 0.04 mm
+// elements and particle spacing, 0.25 us (before the release from the flyer's edge reaches
+// the axis). Far from the edges the impact is one-dimensional, so every element of the
+// target's front row inside r = 0.6 mm should reach the same plastic strain; the axis
+// element's excess over the median of the row at r = 0.2-0.6 mm is returned.
+double axisElementExcess(bool sphFlyer) {
     constexpr double kSize = 0.04;
     json flyer = test::plateBody("flyer", "projectile", -0.42, 0.4, 1.5);
-    flyer["discretization"] = "fe";
+    if (!sphFlyer) {
+        flyer["discretization"] = "fe";
+    }
     flyer["velocity"] = {{"z_km_s", 2.0}};
     json target = test::plateBody("target", "rear_wall", 0.0, 0.6, 2.0);
     target["discretization"] = "fe";
@@ -188,41 +189,75 @@ TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
                                         {"bodies", {flyer, target}}});
     solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
     const std::vector<double> z0 = sim.finiteElements()->nodes().z;
+    const std::vector<double> r0 = sim.finiteElements()->nodes().r;
     test::runUntil(sim, 0.25);
     const fe::FeSolid& fe = *sim.finiteElements();
     const auto& el = fe.elements();
     const auto& nd = fe.nodes();
+    const int32_t targetBody = 1;
     // The target's front row: elements with a node that started at z = 0; the axis element
     // is the one touching r = 0.
     double axisStrain = -1.0;
     std::vector<double> row;
     for (std::size_t i = 0; i < el.size(); ++i) {
-        if (el.body[i] != 1) {
+        if (el.body[i] != targetBody) {
             continue;
         }
-        double zMin = 1e300, rMin = 1e300, rMax = -1e300;
+        double zMin = 1e300, rMin = 1e300, rMax = -1e300, rMin0 = 1e300;
         for (int a = 0; a < 4; ++a) {
             const auto n = static_cast<std::size_t>(el.node(i, a));
             zMin = std::min(zMin, z0[n]);
             rMin = std::min(rMin, nd.r[n]);
             rMax = std::max(rMax, nd.r[n]);
+            rMin0 = std::min(rMin0, r0[n]);
         }
         if (std::fabs(zMin) > 0.5 * kSize) {
             continue;
         }
-        if (rMin == 0.0) {
+        if (rMin0 == 0.0) {
             axisStrain = el.plasticStrain[i];
         } else if (rMin > 0.2 && rMax < 0.6) {
             row.push_back(el.plasticStrain[i]);
         }
     }
-    ASSERT_GE(axisStrain, 0.0) << "no axis element in the target's front row";
-    ASSERT_GE(row.size(), 8u);
+    EXPECT_GE(axisStrain, 0.0) << "no axis element in the target's front row";
+    // The axis nodes stay on the axis: contact gives them no radial impulse.
+    for (std::size_t n = 0; n < nd.size(); ++n) {
+        if (r0[n] == 0.0) {
+            EXPECT_EQ(nd.r[n], 0.0) << "axis node " << n << " left the axis";
+        }
+    }
+    EXPECT_GE(row.size(), 8u);
+    if (row.empty()) {
+        return 1e300;
+    }
     std::sort(row.begin(), row.end());
     const double median = row[row.size() / 2];
-    std::printf("front row plastic strain: axis element %.3f, median at r = 0.2-0.6 mm %.3f "
-                "(%+.1f %%)\n",
-                axisStrain, median, 100.0 * (axisStrain / median - 1.0));
+    std::printf("%s flyer, front row plastic strain: axis element %.3f, median at r = 0.2-0.6 "
+                "mm %.3f (%+.1f %%)\n",
+                sphFlyer ? "SPH" : "FE", axisStrain, median, 100.0 * (axisStrain / median - 1.0));
     EXPECT_GT(median, 0.1) << "the impact should strain the row plastically";
-    EXPECT_LE(std::fabs(axisStrain / median - 1.0), 0.15);
+    return axisStrain / median - 1.0;
+}
+
+} // namespace
+
+// FE on FE. The contact impulses used to be resolved in a single pass in slave order,
+// which left the struck surface's nodes at velocities that followed the order (0.891 km/s
+// on the axis to 0.848 km/s at r = 0.28 mm just after touching) and the axis element at
+// 0.42 plastic strain against 0.24 beside it (+71 %). The impulses solved together gave
+// +4 %, +9 % by 2026-11-23 (with the axis nodes drifting off the axis), +12 % since the
+// axis nodes take no radial impulse; the bar is 15 %.
+TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
+    EXPECT_LE(std::fabs(axisElementExcess(false)), 0.15);
+}
+
+// SPH on FE. Measured (2026-11-23): particles pressing on a point, the axis element took
+// +145 % while contact kicks moved the axis nodes off the axis, and +363 % once they were
+// held there (the first particle column's whole impulse on the axis element's two nodes);
+// each particle spreading its impulse over its footprint (contact/Footprint.hpp), +91 %.
+// What is left is the SPH side's first column (docs/fe-erosion.md, "Where particles press
+// on an FE surface"); the bar, 120 %, keeps the footprint's gain.
+TEST(FeContact, UniformSphImpactStrainsTheAxisElementLikeItsNeighbours) {
+    EXPECT_LE(std::fabs(axisElementExcess(true)), 1.2);
 }
