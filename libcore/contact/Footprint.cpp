@@ -59,29 +59,20 @@ void footprintShares(const SurfaceChain& chain, int32_t centre, double xi, doubl
         pointShares();
         return;
     }
-    // The piece [t1, t2] of segment s (parameter along A -> B): the integrals of
-    // N_A = 1 - t and N_B = t times the radius weight rho(t) = r_A + (r_B - r_A) t (or 1)
-    // and the arc length.
+    // The piece [t1, t2] of segment s (parameter along A -> B): its weight, the integral of
+    // rho(t) = r_A + (r_B - r_A) t (or 1) over its arc length, split between A and B as the
+    // planar shape functions N_A = 1 - t, N_B = t average over it.
     auto addPiece = [&](int32_t s, const Segment& g, double t1, double t2) {
         if (!(t2 > t1)) {
             return;
         }
-        double ra = 1.0, dr = 0.0;
-        if (axisymmetric) {
-            ra = g.ra;
-            dr = g.rb - g.ra;
-        }
-        // Antiderivatives of (1 - t) (ra + dr t) and t (ra + dr t).
-        auto integralA = [&](double t) {
-            return ra * t + 0.5 * (dr - ra) * t * t - dr * t * t * t / 3.0;
-        };
-        auto integralB = [&](double t) { return 0.5 * ra * t * t + dr * t * t * t / 3.0; };
-        const double wa = g.length * (integralA(t2) - integralA(t1));
-        const double wb = g.length * (integralB(t2) - integralB(t1));
+        const double meanRho = axisymmetric ? g.ra + 0.5 * (g.rb - g.ra) * (t1 + t2) : 1.0;
+        const double weight = g.length * (t2 - t1) * meanRho;
+        const double meanT = 0.5 * (t1 + t2);
         const auto su = static_cast<std::size_t>(s);
-        addShare(nodes, chain.segA[su], wa);
-        addShare(nodes, chain.segB[su], wb);
-        addShare(segments, s, wa + wb);
+        addShare(nodes, chain.segA[su], weight * (1.0 - meanT));
+        addShare(nodes, chain.segB[su], weight * meanT);
+        addShare(segments, s, weight);
     };
     // The centre segment's part, then the chain each way until the half-width is used up.
     const double reach = halfWidth / c.length;

@@ -4,13 +4,22 @@
 // factor; h grows as the particle expands, docs/formulation.md), and in axisymmetry for a
 // ring of that cross-section. Pressing on a surface, that piece loads the stretch of surface
 // under it, [s - w/2, s + w/2] along the surface around the foot s of its centre, with the
-// uniform traction of a body much wider than it is deep. The consistent nodal shares of a
-// uniform traction over that stretch are the integrals of the segments' linear shape
-// functions over it (the mortar segment-to-segment projection, Puso M.A., Laursen T.A.
-// (2004), Comput. Methods Appl. Mech. Eng. 193:601-629, with a constant slave traction), weighted
-// by the radius in axisymmetry (the 3D area of a ring of the stretch is 2 pi r ds):
-//     w_k = integral over the footprint of N_k(s) rho(s) ds / integral of rho(s) ds,
-//     rho = r (axisymmetric) or 1 (planar).
+// uniform traction of a body much wider than it is deep. Each piece of a segment under the
+// footprint takes the share of its area (its length, times its mean radius in axisymmetry:
+// the 3D area of a ring is 2 pi r ds), split between the segment's two nodes as the planar
+// linear shape functions average over the piece:
+//     w_A += W_piece (1 - t_mid), w_B += W_piece t_mid,  W_piece = integral of rho ds,
+//     rho = r (axisymmetric) or 1 (planar), normalised to sum 1.
+// In planar mode these are the shape-function integrals of mortar segment-to-segment contact
+// with a constant traction (Puso M.A., Laursen T.A. (2004), Comput. Methods Appl. Mech. Eng.
+// 193:601-629). In axisymmetry they are what the elements' own force form gives a uniform
+// stress (fe/FeSolid.hpp: f_a = -V B_a^T sigma with V = 2 pi r_mid A, so a face's load is
+// its ring area split equally between its nodes), which matches the nodes' lumped masses (a
+// quarter of each element's): a uniform traction then accelerates a uniformly moving
+// surface uniformly, the axis node included. The radius-weighted shape-function integrals
+// (mortar in RZ) would give the axis node a third of its first segment's load and a
+// quarter of its mass, and leave it behind its neighbour (at 0.69 of their speed after an SPH
+// plate's first blow, FeContact_test.cpp).
 // The stretch follows the chain of surface segments from the centre segment both ways. It
 // ends where the chain does (the axis: the footprint of a ring near the axis is the disc it
 // lands on; a corner where the chain turns by more than 45 degrees; the chain's end), so the

@@ -1,10 +1,12 @@
-// A particle's footprint on an FE surface (libcore/contact/Footprint): the nodal shares are
-// the shape functions' integrals over the footprint, weighted by the radius in axisymmetry.
-// Checked against an independent midpoint-rule quadrature of the hat functions on a
-// non-uniform chain, and against the properties the contact relies on: the shares sum to 1,
-// their first moment is the footprint's centroid (so the impulse acts where the particle
-// is, not beside it), the footprint ends at the axis and at a corner, and a zero width gives
-// the point shares of the node-to-segment contact.
+// A particle's footprint on an FE surface (libcore/contact/Footprint): each covered piece of
+// a segment takes its share of the footprint's area (ring area in axisymmetry), split between
+// the segment's nodes as the planar hat functions average over the piece. Checked against an
+// independent midpoint-rule quadrature on a non-uniform chain, and for the properties the
+// contact relies on: the shares sum to 1; in planar mode their first moment is the particle's
+// foot (the impulse acts where the particle is); a uniform lattice of particles loads the
+// nodes in proportion to their lumped masses, the axis node included (so a uniform blow moves
+// a uniform surface uniformly); the footprint ends at the axis and at a corner; and a zero
+// width gives the point shares of the node-to-segment contact.
 #include "contact/Footprint.hpp"
 
 #include <algorithm>
@@ -52,27 +54,34 @@ double shareOf(const std::vector<contact::Share>& shares, int32_t index) {
     return 0.0;
 }
 
-/// The reference: hat function of node k on the node radii, integrated by the midpoint rule
-/// over [lo, hi] with weight r (or 1), normalised by the same rule's total.
+/// The reference, by the midpoint rule over [lo, hi]: each segment's covered area (weight r
+/// or 1) and the mean of its hat parameter t over the covered part; the segment's area split
+/// (1 - mean t, mean t) between its nodes, normalised by the total area.
 std::vector<double> quadratureShares(const std::vector<double>& radii, double lo, double hi,
                                      bool axisymmetric) {
     const int steps = 200000;
-    std::vector<double> w(radii.size(), 0.0);
+    const std::size_t segments = radii.size() - 1;
+    std::vector<double> area(segments, 0.0), sumT(segments, 0.0), count(segments, 0.0);
     double total = 0.0;
     for (int s = 0; s < steps; ++s) {
         const double x = lo + (hi - lo) * (s + 0.5) / steps;
         const double rho = axisymmetric ? x : 1.0;
-        for (std::size_t k = 0; k + 1 < radii.size(); ++k) {
+        for (std::size_t k = 0; k < segments; ++k) {
             if (x >= radii[k] && x < radii[k + 1]) {
-                const double t = (x - radii[k]) / (radii[k + 1] - radii[k]);
-                w[k] += (1.0 - t) * rho;
-                w[k + 1] += t * rho;
+                area[k] += rho;
+                sumT[k] += (x - radii[k]) / (radii[k + 1] - radii[k]);
+                count[k] += 1.0;
             }
         }
         total += rho;
     }
-    for (auto& x : w) {
-        x /= total;
+    std::vector<double> w(radii.size(), 0.0);
+    for (std::size_t k = 0; k < segments; ++k) {
+        if (count[k] > 0.0) {
+            const double meanT = sumT[k] / count[k];
+            w[k] += area[k] * (1.0 - meanT) / total;
+            w[k + 1] += area[k] * meanT / total;
+        }
     }
     return w;
 }
@@ -92,7 +101,7 @@ TEST(Footprint, ZeroWidthGivesThePointShares) {
     EXPECT_DOUBLE_EQ(segments[0].weight, 1.0);
 }
 
-TEST(Footprint, SharesAreTheWeightedShapeFunctionIntegrals) {
+TEST(Footprint, SharesAreThePiecesAreasSplitByTheHatFunctions) {
     const Chain chain(kRadii, 0.0);
     // Centre r = 0.135 on segment 3 (0.12-0.15), half-width 0.07: covers 0.065-0.205,
     // five segments, six nodes.
@@ -110,12 +119,11 @@ TEST(Footprint, SharesAreTheWeightedShapeFunctionIntegrals) {
             moment += got * kRadii[k];
         }
         EXPECT_NEAR(sum, 1.0, 1e-14);
-        // Linear shape functions reproduce r: the shares' first moment is the footprint's
-        // centroid, the particle's foot in planar mode, its r-weighted centroid in RZ.
-        const double lo = foot - half, hi = foot + half;
-        const double centroid =
-            axisymmetric ? (2.0 / 3.0) * (hi * hi * hi - lo * lo * lo) / (hi * hi - lo * lo) : foot;
-        EXPECT_NEAR(moment, centroid, 1e-14);
+        if (!axisymmetric) {
+            // Planar: the shares are the hat functions' integrals, which reproduce r, so
+            // their first moment is the particle's foot.
+            EXPECT_NEAR(moment, foot, 1e-14);
+        }
         double segmentSum = 0.0;
         for (const auto& s : segments) {
             segmentSum += s.weight;
@@ -136,9 +144,9 @@ TEST(Footprint, EndsAtTheAxis) {
         EXPECT_NEAR(shareOf(nodes, static_cast<int32_t>(k)), expected[k], 1e-6) << "node " << k;
     }
     EXPECT_EQ(shareOf(nodes, 3), 0.0);
-    // In closed form the axis node takes (0.04^2 / 6) / (0.07^2 / 2) = 0.109; the point
-    // contact gave it half the impulse.
-    EXPECT_NEAR(shareOf(nodes, 0), (0.04 * 0.04 / 6.0) / (0.07 * 0.07 / 2.0), 1e-12);
+    // In closed form the axis node takes half the first segment's ring area over the
+    // disc's, (0.04^2 / 2) / 2 / (0.07^2 / 2) = 0.163.
+    EXPECT_NEAR(shareOf(nodes, 0), 0.5 * (0.04 * 0.04) / (0.07 * 0.07), 1e-12);
 }
 
 TEST(Footprint, StopsAtACorner) {
@@ -151,5 +159,36 @@ TEST(Footprint, StopsAtACorner) {
     const auto expected = quadratureShares(kRadii, 0.22, 0.3, true);
     for (std::size_t k = 0; k < kRadii.size(); ++k) {
         EXPECT_NEAR(shareOf(nodes, static_cast<int32_t>(k)), expected[k], 1e-6) << "node " << k;
+    }
+}
+
+TEST(Footprint, AUniformLatticeLoadsTheNodesAsTheirLumpedMasses) {
+    // Particles at r = (j + 1/2) d, one per segment of a uniform face, each of ring mass
+    // proportional to its radius and with the footprint of its lattice cell (half-width d/2).
+    // Pressing uniformly, their summed loads on the nodes must be proportional to the nodes'
+    // lumped masses (a quarter of each adjacent element's ring mass, so proportional to the
+    // sum of the adjacent segments' mid radii), or a uniform blow would not move the surface
+    // uniformly. The radius-weighted hat integrals give the axis node two thirds of that.
+    const double d = 0.04;
+    const int n = 8;
+    std::vector<double> radii;
+    for (int k = 0; k <= n; ++k) {
+        radii.push_back(k * d);
+    }
+    const Chain chain(radii, 0.0);
+    std::vector<double> load(radii.size(), 0.0), lumped(radii.size(), 0.0);
+    std::vector<contact::Share> nodes, segments;
+    for (int j = 0; j < n; ++j) {
+        const double mass = (j + 0.5) * d;
+        contact::footprintShares(chain.view(), j, 0.5, 0.5 * d, true, nodes, segments);
+        for (const auto& share : nodes) {
+            load[static_cast<std::size_t>(share.index)] += mass * share.weight;
+        }
+        lumped[static_cast<std::size_t>(j)] += 0.25 * mass;
+        lumped[static_cast<std::size_t>(j) + 1] += 0.25 * mass;
+    }
+    const double ratio = load[1] / lumped[1];
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+        EXPECT_NEAR(load[k] / lumped[k], ratio, 1e-12 * ratio) << "node " << k;
     }
 }
