@@ -17,17 +17,16 @@
 // its ring area split equally between its nodes), which matches the nodes' lumped masses (a
 // quarter of each element's): a uniform traction then accelerates a uniformly moving
 // surface uniformly, the axis node included. The radius-weighted shape-function integrals
-// (mortar in RZ) would give the axis node a third of its first segment's load and a
-// quarter of its mass, and leave it behind its neighbour (at 0.69 of their speed after an SPH
-// plate's first blow, FeContact_test.cpp).
-// The stretch follows the chain of surface segments from the centre segment both ways. It
-// ends where the chain does (the axis: the footprint of a ring near the axis is the disc it
-// lands on; a corner where the chain turns by more than 45 degrees; the chain's end), so the
-// footprint never wraps round a corner onto a face that does not meet the particle. The
-// shares sum to 1. Why: a point contact hands a particle's whole impulse to the two nodes
-// of the segment under its centre; an expanded particle on the axis then loads the disc of
-// one element with the areal mass of a solid slug (docs/fe-erosion.md, "What fails the
-// axis column").
+// (mortar in RZ) would give the axis node a third of its first segment's load, though it
+// carries half of that element's mass on the face, and leave it behind its neighbour (at 0.69 of
+// their speed after an SPH plate's first blow, FeContact_test.cpp). The stretch follows the chain
+// of surface segments from the centre segment both ways. It ends where the chain does (the axis:
+// the footprint of a ring near the axis is the disc it lands on; a corner where the chain turns by
+// more than 45 degrees; the chain's end), so the footprint never wraps round a corner onto a face
+// that does not meet the particle. The shares sum to 1. Why: a point contact hands a particle's
+// whole impulse to the two nodes of the segment under its centre; an expanded particle on the axis
+// then loads the disc of one element with the areal mass of a solid slug (docs/fe-erosion.md, "What
+// fails the axis column").
 //
 // Units: mm (lengths); the shares are dimensionless.
 #pragma once
