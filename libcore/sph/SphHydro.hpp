@@ -71,10 +71,20 @@ struct HydroOptions {
 /// evaluation instead of once per pair.
 struct alignas(64) PairData {
     double z, r, h, mass, vz, vr, rho, cs;
-    double bzz, brr, brz;   ///< B = sigma / rho^2, in-plane components [GPa cm^6/g^2]
-    double areaMass;        ///< A = m / (2 pi r) (planar: m) [mg/mm]
-    double volume;          ///< A / rho [mm^2]
-    double azz, arr, arz;   ///< artificial stress R / rho^2 [GPa cm^6/g^2] (0 when off)
+    double bzz, brr, brz; ///< B = sigma / rho^2, in-plane components [GPa cm^6/g^2]
+    double areaMass;      ///< A = m / (2 pi r) (planar: m) [mg/mm]
+    double volume;        ///< A / rho [mm^2]
+    double azz, arr, arz; ///< artificial stress R / rho^2 [GPa cm^6/g^2] (0 when off)
+};
+
+/// Scratch of the axis-face correction (file comment): the own-part excess taken off the
+/// particles that have mirror images among their neighbours, to be handed to their neighbours.
+struct AxisFaceExcess {
+    std::vector<double> excessZ;              ///< per particle [km/s/us]; valid for givers
+    std::vector<double> axialWeight;          ///< sum_j m_j |dW/dz| per giver
+    std::vector<std::vector<int32_t>> givers; ///< per thread, filled by the pair loop
+    std::vector<int32_t> merged, receivers;   ///< ascending
+    std::vector<uint8_t> isGiver, isReceiver; ///< per particle flags, zero between calls
 };
 
 class SphHydro {
@@ -105,6 +115,7 @@ private:
     double m_stableDt = 0.0;
     int32_t m_limitingParticle = -1;
     std::vector<PairData> m_data; ///< per particle, refreshed by every evaluate()
+    AxisFaceExcess m_face;
 };
 
 } // namespace hvi::sph
