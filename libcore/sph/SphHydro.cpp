@@ -77,7 +77,6 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             double ownExcessZ = 0.0;  // sum (w_own - A) B_i,zz dW/dz, of the own stress
             double viscExcessZ = 0.0; // -sum (w_pair - A) Pi dW/dz, of the viscosity
             double axialWeight = 0.0; // sum m_j |dW/dz|: how the excess is handed on
-            bool mirrored = false;    // a mirror image is among the neighbours
             double viscHoop = 0.0;    // sum (w_pair - A) Pi grad_r W: the viscous hoop part
             double maxMu = 0.0;
             // Pass 1: keep the listed candidates inside the support (the list reaches a Verlet
@@ -94,6 +93,8 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 inside[count] = j;
                 count += (dz * dz + dr * dr < support * support) ? 1 : 0;
             }
+            // A mirror image is among the neighbours (ghosts come last in a row).
+            const bool mirrored = count > 0 && sgn[inside[count - 1]] < 0.0;
             // Pass 2: the pair terms. Each particle's own stress acts over its own
             // circumference and the neighbour's over the neighbour's: the pair force
             // m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) . grad W is antisymmetric (z-momentum is
@@ -174,10 +175,11 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                     const double excess = (wPair - areaMass) * wr;
                     gr += excess;
                     viscHoop += excess * visc;
-                    ownExcessZ += (wOwn - areaMass) * ozz * wz;
-                    viscExcessZ -= (wPair - areaMass) * visc * wz;
-                    axialWeight += mj * std::fabs(wz);
-                    mirrored = mirrored || sg < 0.0;
+                    if (mirrored) {
+                        ownExcessZ += (wOwn - areaMass) * ozz * wz;
+                        viscExcessZ -= (wPair - areaMass) * visc * wz;
+                        axialWeight += mj * std::fabs(wz);
+                    }
                 }
             }
             // Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
@@ -241,7 +243,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                     az -= excessZ;
                     face.excessZ[i] = excessZ;
                     face.axialWeight[i] = axialWeight;
-                    face.givers[static_cast<std::size_t>(omp_get_thread_num())].push_back(i);
+                    face.givers[static_cast<std::size_t>(omp_get_thread_num())].list.push_back(i);
                 }
             }
             rates.az[i] += az;
@@ -308,8 +310,8 @@ void spreadFaceExcess(const NeighbourList& list, const std::vector<PairData>& da
     using Shape = typename Kern::ShapeType;
     face.merged.clear();
     for (auto& g : face.givers) {
-        face.merged.insert(face.merged.end(), g.begin(), g.end());
-        g.clear();
+        face.merged.insert(face.merged.end(), g.list.begin(), g.list.end());
+        g.list.clear();
     }
     if (face.merged.empty()) {
         return;
@@ -342,7 +344,7 @@ void spreadFaceExcess(const NeighbourList& list, const std::vector<PairData>& da
     const PairData* pd = data.data();
     const auto* sgn = list.sign.data();
     const std::size_t receiverCount = face.receivers.size();
-#pragma omp parallel for schedule(dynamic, 64) if (receiverCount > kParallelMinItems)
+#pragma omp parallel for schedule(dynamic, 32) if (receiverCount > kParallelMinHeavyItems)
     for (std::size_t x = 0; x < receiverCount; ++x) {
         const int32_t i = face.receivers[x];
         const PairData& di = pd[i];

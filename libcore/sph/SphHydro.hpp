@@ -21,8 +21,15 @@
 //   along z only, or a linear velocity field, none either (docs/formulation.md,
 //   tests/unit/sph/AxisForces_test.cpp).
 //   The energy equation is the compatible one (Owen 2004-style pairwise work split), so total
-//   energy is conserved by the semi-discrete equations:
-//     de_i/dt = -sum_j v_ij . (w_own,ij B_i - w_pair,ij Pi_ij/2 I) . grad W_ij  -  v_r,i hoop_i
+//   energy is conserved by the semi-discrete equations; the stress work is split with the
+//   area weights (docs/formulation.md, Energy):
+//     de_i/dt = -sum_j v_ij . (A_j B_i + (w_own,ij - A_j)(B_i - B_j)/2
+//                              - w_pair,ij Pi_ij/2 I) . grad W_ij  -  v_r,i hoop_i
+//   Axis faces (docs/formulation.md, The axis): a particle with a mirror among its neighbours
+//   takes off the axial excess of its own-stress and viscous sums over the area-weighted ones,
+//     X_i = sum_j [(w_own,ij - A_j) B_zz,i - (w_pair,ij - A_j) Pi_ij] dW_ij/dz,
+//   and hands m_i X_i to its neighbours in proportion to m_j |dW_ij/dz| as pair forces, their
+//   work booked on the pair by mass (z-momentum and energy stay exact).
 //   Planar mode: w_own = w_pair = A_j = m_j (mass per unit depth), no hoop term.
 // Artificial viscosity: Monaghan & Gingold (1983), Monaghan (1992) eq. 4.1:
 //   Pi_ij = (-alpha cbar mu + beta mu^2) / rhobar for approaching pairs,
@@ -80,9 +87,14 @@ struct alignas(64) PairData {
 /// Scratch of the axis-face correction (file comment): the own-part excess taken off the
 /// particles that have mirror images among their neighbours, to be handed to their neighbours.
 struct AxisFaceExcess {
-    std::vector<double> excessZ;              ///< per particle [km/s/us]; valid for givers
-    std::vector<double> axialWeight;          ///< sum_j m_j |dW/dz| per giver
-    std::vector<std::vector<int32_t>> givers; ///< per thread, filled by the pair loop
+    std::vector<double> excessZ;     ///< per particle [km/s/us]; valid for givers
+    std::vector<double> axialWeight; ///< sum_j m_j |dW/dz| per giver
+    /// Per thread, filled by the pair loop; a cache line each, so the threads' appends do
+    /// not share one.
+    struct alignas(64) ThreadGivers {
+        std::vector<int32_t> list;
+    };
+    std::vector<ThreadGivers> givers;
     std::vector<int32_t> merged, receivers;   ///< ascending
     std::vector<uint8_t> isGiver, isReceiver; ///< per particle flags, zero between calls
 };
