@@ -232,8 +232,8 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 // moment of the stress differences enters the force (docs/formulation.md).
                 ar += hoopR + hoopViscR;
                 de -= vri * (hoopR + hoopViscR);
-                // The own part's axial excess at a z-face near the axis (header comment):
-                // taken off this particle here, handed to its neighbours by spreadFaceExcess.
+                // The axial excess at a z-face near the axis (header comment): taken off
+                // this particle here, handed to its neighbours by spreadFaceExcess.
                 // Only an awake particle hands its excess on: all its neighbours are then
                 // evaluated, so the receivers exist whether or not dormant particles are
                 // skipped. (One at rest and unstressed has only a viscous excess, from a
@@ -302,7 +302,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
 
 /// Hands each giver's removed axial excess m_i X_i to the neighbours inside its support in
 /// proportion to m_j |dW_ij/dz|, as pair forces (so z-momentum stays exact), and books the
-/// work of those pair forces on the giver, whose stress they carry (so energy stays exact).
+/// work of those pair forces on the pair's internal energies by mass (so energy stays exact).
 /// Gathered per receiver in ascending neighbour order: the sums do not depend on threads.
 template <class Kern>
 void spreadFaceExcess(const NeighbourList& list, const std::vector<PairData>& data,
@@ -320,8 +320,8 @@ void spreadFaceExcess(const NeighbourList& list, const std::vector<PairData>& da
     const auto rowOf = [&list](int32_t i) {
         const auto it = std::lower_bound(list.listed.begin(), list.listed.end(), i);
         if (it == list.listed.end() || *it != i) {
-            // Cannot happen: a giver is stressed, hence awake, so it and every particle
-            // within its listed reach are evaluated and have rows.
+            // Cannot happen: a giver is awake, so it and every particle within its listed
+            // reach are evaluated and have rows.
             throw std::logic_error("SphHydro: an axis-face receiver has no neighbour row");
         }
         return static_cast<int32_t>(it - list.listed.begin());

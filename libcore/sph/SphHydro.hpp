@@ -84,7 +84,7 @@ struct alignas(64) PairData {
     double azz, arr, arz; ///< artificial stress R / rho^2 [GPa cm^6/g^2] (0 when off)
 };
 
-/// Scratch of the axis-face correction (file comment): the own-part excess taken off the
+/// Scratch of the axis-face correction (file comment): the axial excess taken off the
 /// particles that have mirror images among their neighbours, to be handed to their neighbours.
 struct AxisFaceExcess {
     std::vector<double> excessZ;     ///< per particle [km/s/us]; valid for givers
