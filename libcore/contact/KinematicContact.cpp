@@ -134,11 +134,27 @@ void KinematicContact::rebuildSegments(const fe::ElementSet& el, const fe::NodeS
     if (m_edgeTableElements != el.size()) {
         buildEdgeTable(el);
     }
-    m_nodeElement.assign(nd.size(), -1);
+    // The alive elements of each node (CSR, in element order), which share a node's heat.
+    m_nodeElementOffset.assign(nd.size() + 1, 0);
     for (std::size_t i = 0; i < el.size(); ++i) {
         if (el.alive[i]) {
             for (int a = 0; a < 4; ++a) {
-                m_nodeElement[static_cast<std::size_t>(el.node(i, a))] = static_cast<int32_t>(i);
+                ++m_nodeElementOffset[static_cast<std::size_t>(el.node(i, a)) + 1];
+            }
+        }
+    }
+    for (std::size_t n = 0; n < nd.size(); ++n) {
+        m_nodeElementOffset[n + 1] += m_nodeElementOffset[n];
+    }
+    m_nodeElements.resize(static_cast<std::size_t>(m_nodeElementOffset[nd.size()]));
+    {
+        std::vector<int32_t> fill(m_nodeElementOffset.begin(), m_nodeElementOffset.end() - 1);
+        for (std::size_t i = 0; i < el.size(); ++i) {
+            if (el.alive[i]) {
+                for (int a = 0; a < 4; ++a) {
+                    const auto n = static_cast<std::size_t>(el.node(i, a));
+                    m_nodeElements[static_cast<std::size_t>(fill[n]++)] = static_cast<int32_t>(i);
+                }
             }
         }
     }
@@ -405,6 +421,9 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
 
     // Contact flags of the previous step, per slave (particles, then nodes by node index).
     std::vector<uint8_t> previous(slaveCount, 0), nowInContact(slaveCount, 0);
+    // Nodes that took an impulse as a master this step: a pair of touching surfaces is in
+    // contact whichever of its constraints carries the impulse next step.
+    std::vector<uint8_t> pressedAsMaster(nd.size(), 0);
     if (m_inContact.size() == np + nd.size()) {
         for (std::size_t k = 0; k < slaveCount; ++k) {
             previous[k] =
@@ -417,6 +436,21 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
     auto heatElement = [&](int32_t element, double energy) {
         const auto e = static_cast<std::size_t>(element);
         el.e[e] += energy / el.mass[e];
+    };
+    // The mass of a node's alive elements, and its heat shared among them by mass.
+    auto nodeElementMass = [&](std::size_t node) {
+        double mass = 0.0;
+        for (int32_t k = m_nodeElementOffset[node]; k < m_nodeElementOffset[node + 1]; ++k) {
+            mass += el.mass[static_cast<std::size_t>(m_nodeElements[static_cast<std::size_t>(k)])];
+        }
+        return mass;
+    };
+    auto heatNode = [&](std::size_t node, double energy) {
+        const double mass = nodeElementMass(node);
+        for (int32_t k = m_nodeElementOffset[node]; k < m_nodeElementOffset[node + 1]; ++k) {
+            const int32_t e = m_nodeElements[static_cast<std::size_t>(k)];
+            heatElement(e, energy * el.mass[static_cast<std::size_t>(e)] / mass);
+        }
     };
     // Changes the velocity of a point by dv along n.
     auto kick = [](double& vz, double& vr, double dv, double nz, double nr) {
@@ -586,6 +620,13 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         if (con.impulse > 0.0) {
             nowInContact[k] = 1;
             ++m_contactCount;
+            if (con.target >= 0) {
+                for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
+                    if (footNodes[q].weight > 0.0) {
+                        pressedAsMaster[static_cast<std::size_t>(footNodes[q].index)] = 1;
+                    }
+                }
+            }
         }
         // Energy. A new contact is a collision: the kinetic energy it takes becomes heat,
         // so total energy is conserved. So is every contact with a particle: the
@@ -593,9 +634,14 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         // velocity the constraint removes. A lasting contact between FE nodes and
         // segments only cancels the kick of the forces pressing the pair together, which
         // the elements never paid for (their work follows the net motion, computed after
-        // this constraint): no heat.
+        // this constraint): no heat. A node is in contact the step after it took an impulse
+        // as a slave or as a master: two touching surfaces have a constraint each way, and
+        // when the impulse moved from the one to the other (the struck plate's axis node
+        // pressing back on the flyer's, the step after the flyer's axis node had struck it)
+        // that pressing was booked as a new collision, and the axis element of an FE plate
+        // struck by another took 2.1 times its row's specific heat in the first blow.
         // The heat is shared in proportion to the masses that take it (the slave
-        // particle, the element of a slave node, a free node itself; the master
+        // particle, the elements of a slave node, a free node itself; the master
         // segment's element, or the master particle), so both sides rise by the same
         // specific energy, as the two sides of a symmetric impact of like materials do
         // (u_p^2 / 2 each). A free node is eroded material: its share joins the eroded
@@ -613,14 +659,18 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         // face 1.36 times the specific heat of the fifth.
         const double heat = -0.5 * con.impulse * (con.approachBefore + normalVelocity(con));
         m_dissipatedEnergy += heat;
-        const bool slaveIsFree =
-            !isParticle && !(nd.elementCount[idx] > 0 && m_nodeElement[idx] >= 0);
-        const double slaveHeatMass = isParticle ? ps.mass[idx]
-                                     : slaveIsFree
-                                         ? nd.mass[idx]
-                                         : el.mass[static_cast<std::size_t>(m_nodeElement[idx])];
-        // A footprint's master side is the elements of its segments, each taking the
-        // share of the impulse its segment took.
+        const bool slaveIsFree = !isParticle && nodeElementMass(idx) <= 0.0;
+        const double slaveHeatMass = isParticle    ? ps.mass[idx]
+                                     : slaveIsFree ? nd.mass[idx]
+                                                   : nodeElementMass(idx);
+        // A particle's footprint: the master side is the elements of its segments, each
+        // taking the share of the impulse its segment took (the shares follow the ring areas,
+        // so every column's elements take the same specific heat). A node presses on a point,
+        // which on matching meshes is a master node: its side is the elements around the
+        // master nodes, by the nodes' shares, as the slave's side is the elements around the
+        // slave node, each by its mass, as the nodes' lumped masses are made. (Before, a
+        // node's heat went to one of its elements, whichever came last in the mesh, and a
+        // point at a segment's end to that segment's element.)
         auto segmentElement = [&](std::size_t q) {
             return static_cast<std::size_t>(
                 m_segElement[static_cast<std::size_t>(footSegments[q].index)]);
@@ -628,25 +678,36 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         double masterHeatMass = 0.0;
         if (con.target < 0) {
             masterHeatMass = ps.mass[con.j];
-        } else {
+        } else if (isParticle) {
             for (std::size_t q = con.segmentFirst; q < con.segmentFirst + con.segmentCount; ++q) {
                 masterHeatMass += footSegments[q].weight * el.mass[segmentElement(q)];
+            }
+        } else {
+            for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
+                masterHeatMass += footNodes[q].weight *
+                                  nodeElementMass(static_cast<std::size_t>(footNodes[q].index));
             }
         }
         const double slaveShare = heat * slaveHeatMass / (slaveHeatMass + masterHeatMass);
         const double masterShare = heat - slaveShare;
         if (con.target < 0) {
             heatParticle(con.j, masterShare);
-        } else {
+        } else if (isParticle) {
             for (std::size_t q = con.segmentFirst; q < con.segmentFirst + con.segmentCount; ++q) {
                 heatElement(static_cast<int32_t>(segmentElement(q)),
                             masterShare * footSegments[q].weight);
+            }
+        } else if (masterHeatMass > 0.0) {
+            for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
+                const auto node = static_cast<std::size_t>(footNodes[q].index);
+                heatNode(node, masterShare * footNodes[q].weight * nodeElementMass(node) /
+                                   masterHeatMass);
             }
         }
         if (isParticle) {
             heatParticle(idx, slaveShare);
         } else if (!slaveIsFree) {
-            heatElement(m_nodeElement[idx], slaveShare);
+            heatNode(idx, slaveShare);
         } else {
             m_freeNodeHeat += slaveShare;
         }
@@ -658,6 +719,9 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
     for (std::size_t k = 0; k < slaveCount; ++k) {
         m_inContact[k < np ? k : np + static_cast<std::size_t>(slaveNodes[k - np])] =
             nowInContact[k];
+    }
+    for (std::size_t n = 0; n < nd.size(); ++n) {
+        m_inContact[np + n] |= pressedAsMaster[n];
     }
 }
 

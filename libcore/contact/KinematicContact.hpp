@@ -142,7 +142,9 @@ private:
     std::vector<int32_t> m_edgeOffset, m_edgeElement;
     std::vector<uint8_t> m_edgeCorner;
     std::size_t m_edgeTableElements = std::numeric_limits<std::size_t>::max();
-    std::vector<int32_t> m_nodeElement; ///< an alive element of each node (-1: free node)
+    /// The alive elements of each node: m_nodeElements[m_nodeElementOffset[n] ...
+    /// m_nodeElementOffset[n + 1]) (none: a free node).
+    std::vector<int32_t> m_nodeElementOffset, m_nodeElements;
     std::vector<uint8_t> m_surfaceNode; ///< node lies on a master segment of its own body
     std::vector<uint8_t> m_inContact;   ///< per particle, then per node: in contact last step
     std::vector<int32_t> m_touchedParticles;

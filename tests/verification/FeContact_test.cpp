@@ -206,7 +206,8 @@ void expectAxisNodesOnAxis(const fe::NodeSet& nd, const std::vector<double>& r0)
 // (0.891 km/s on the axis to 0.848 km/s at r = 0.28 mm just after touching) and the axis
 // element at 0.42 plastic strain against 0.24 beside it (+71 %). The impulses solved
 // together gave +4 %, +9 % by 2026-11-23 (with the axis nodes drifting off the axis), +12 %
-// since the axis nodes take no radial impulse; the bar is 15 %.
+// since the axis nodes take no radial impulse, +3.6 % since a surface pressing back is no new
+// collision (UniformFeBlowHeatsTheFrontRowsAlike); the bar is 8 %, which the +12 % fails.
 TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
     solver::Simulation sim(uniformImpactScene(false),
                            solver::sceneLibrary(json::object(), "<test>"));
@@ -250,7 +251,52 @@ TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
                 "(%+.1f %%)\n",
                 axisStrain, median, 100.0 * (axisStrain / median - 1.0));
     EXPECT_GT(median, 0.1) << "the impact should strain the row plastically";
-    EXPECT_LE(std::fabs(axisStrain / median - 1.0), 0.15);
+    EXPECT_LE(std::fabs(axisStrain / median - 1.0), 0.08);
+}
+
+// FE on FE: the first blow heats both front rows alike at every radius. Two touching
+// surfaces have a constraint each way; a node that took an impulse as a master is in contact
+// the next step too, so when the impulse passes to the other constraint (the struck plate's
+// axis node pressing back on the flyer's) it is not booked as a new collision. It was, and
+// the target's axis element had 0.220 MJ/kg against 0.104 beside it at 0.011 us (2.1 times;
+// the flyer's 0.215 against 0.101). Each side's heat goes to the elements around its nodes
+// by mass (contact/KinematicContact.cpp).
+TEST(FeContact, UniformFeBlowHeatsTheFrontRowsAlike) {
+    solver::Simulation sim(uniformImpactScene(false),
+                           solver::sceneLibrary(json::object(), "<test>"));
+    const std::vector<double> z0 = sim.finiteElements()->nodes().z;
+    const std::vector<double> r0 = sim.finiteElements()->nodes().r;
+    test::runUntil(sim, 0.011);
+    const auto& el = sim.finiteElements()->elements();
+    for (const int32_t body : {0, 1}) {
+        // The row at the struck face: the flyer's front row, the target's.
+        const double face = body == 0 ? -0.02 : 0.0;
+        double eMin = 1e300, eMax = 0.0;
+        int count = 0;
+        for (std::size_t i = 0; i < el.size(); ++i) {
+            if (el.body[i] != body) {
+                continue;
+            }
+            bool onFace = false;
+            double rMax = 0.0;
+            for (int a = 0; a < 4; ++a) {
+                const auto n = static_cast<std::size_t>(el.node(i, a));
+                onFace = onFace || std::fabs(z0[n] - face) < 1e-9;
+                rMax = std::max(rMax, r0[n]);
+            }
+            if (onFace && rMax < 0.6) {
+                eMin = std::min(eMin, el.e[i]);
+                eMax = std::max(eMax, el.e[i]);
+                ++count;
+            }
+        }
+        std::printf("body %d front row (%d elements): specific internal energy %.4f to %.4f "
+                    "MJ/kg\n",
+                    body, count, eMin, eMax);
+        ASSERT_GE(count, 10);
+        EXPECT_GT(eMin, 0.05) << "the blow should have heated the row";
+        EXPECT_LE(eMax / eMin - 1.0, 0.05);
+    }
 }
 
 // SPH on FE: the first blow of a uniform SPH plate moves the struck FE surface uniformly,
