@@ -437,7 +437,8 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         const auto e = static_cast<std::size_t>(element);
         el.e[e] += energy / el.mass[e];
     };
-    // The mass of a node's alive elements, and its heat shared among them by mass.
+    // The mass of a node's alive elements. Heat shared among them by mass raises each by
+    // the same specific energy, which heatNode adds.
     auto nodeElementMass = [&](std::size_t node) {
         double mass = 0.0;
         for (int32_t k = m_nodeElementOffset[node]; k < m_nodeElementOffset[node + 1]; ++k) {
@@ -445,11 +446,10 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         }
         return mass;
     };
-    auto heatNode = [&](std::size_t node, double energy) {
-        const double mass = nodeElementMass(node);
+    auto heatNode = [&](std::size_t node, double specificEnergy) {
         for (int32_t k = m_nodeElementOffset[node]; k < m_nodeElementOffset[node + 1]; ++k) {
-            const int32_t e = m_nodeElements[static_cast<std::size_t>(k)];
-            heatElement(e, energy * el.mass[static_cast<std::size_t>(e)] / mass);
+            el.e[static_cast<std::size_t>(m_nodeElements[static_cast<std::size_t>(k)])] +=
+                specificEnergy;
         }
     };
     // Changes the velocity of a point by dv along n.
@@ -659,10 +659,11 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         // face 1.36 times the specific heat of the fifth.
         const double heat = -0.5 * con.impulse * (con.approachBefore + normalVelocity(con));
         m_dissipatedEnergy += heat;
-        const bool slaveIsFree = !isParticle && nodeElementMass(idx) <= 0.0;
+        const double slaveElementMass = isParticle ? 0.0 : nodeElementMass(idx);
+        const bool slaveIsFree = !isParticle && slaveElementMass <= 0.0;
         const double slaveHeatMass = isParticle    ? ps.mass[idx]
                                      : slaveIsFree ? nd.mass[idx]
-                                                   : nodeElementMass(idx);
+                                                   : slaveElementMass;
         // A particle's footprint: the master side is the elements of its segments, each
         // taking the share of the impulse its segment took (the shares follow the ring areas,
         // so every column's elements take the same specific heat). A node presses on a point,
@@ -699,15 +700,14 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
             }
         } else if (masterHeatMass > 0.0) {
             for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
-                const auto node = static_cast<std::size_t>(footNodes[q].index);
-                heatNode(node, masterShare * footNodes[q].weight * nodeElementMass(node) /
-                                   masterHeatMass);
+                heatNode(static_cast<std::size_t>(footNodes[q].index),
+                         masterShare * footNodes[q].weight / masterHeatMass);
             }
         }
         if (isParticle) {
             heatParticle(idx, slaveShare);
         } else if (!slaveIsFree) {
-            heatNode(idx, slaveShare);
+            heatNode(idx, slaveShare / slaveElementMass);
         } else {
             m_freeNodeHeat += slaveShare;
         }

@@ -329,15 +329,18 @@ void spreadFaceExcess(const NeighbourList& list, const std::vector<PairData>& da
     const auto* src = list.source.data();
     const auto* nb = list.neighbours.data();
     face.receivers.clear();
+    const auto addReceiver = [&face](int32_t s) {
+        if (!face.isReceiver[static_cast<std::size_t>(s)]) {
+            face.isReceiver[static_cast<std::size_t>(s)] = 1;
+            face.receivers.push_back(s);
+        }
+    };
     for (const int32_t i : face.merged) {
         face.isGiver[static_cast<std::size_t>(i)] = 1;
+        addReceiver(i); // a giver books its side of the pair work in the gather
         const int32_t row = rowOf(i);
-        for (int64_t k = list.offset[row] - 1; k < list.offset[row + 1]; ++k) {
-            const int32_t s = k < list.offset[row] ? i : src[nb[k]]; // the giver itself first
-            if (!face.isReceiver[static_cast<std::size_t>(s)]) {
-                face.isReceiver[static_cast<std::size_t>(s)] = 1;
-                face.receivers.push_back(s);
-            }
+        for (int64_t k = list.offset[row]; k < list.offset[row + 1]; ++k) {
+            addReceiver(src[nb[k]]);
         }
     }
     std::sort(face.receivers.begin(), face.receivers.end());
