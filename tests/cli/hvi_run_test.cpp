@@ -4,8 +4,8 @@
 #include "RunTool.hpp"
 #include "io/RunFileReader.hpp"
 
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <gtest/gtest.h>
 
 using namespace hvi::test;
@@ -106,4 +106,30 @@ TEST(HviRunCli, ResolutionFlagSetsParticleSpacingAndElementSize) {
     EXPECT_EQ(reader.scene()["fe"]["element_size_mm"], 0.05);
     // The 0.5 mm x 3 mm plate at 0.05 mm: 10 x 60 elements.
     EXPECT_EQ(reader.snapshots().front().elementCount, 600u);
+}
+
+// The scenes the workflows ship (docs/fe-erosion.md's tables come from them) load and run:
+// each at a coarse 0.2 mm for 0.02 us, a smoke test of the files, not of their physics.
+TEST(HviRunCli, ShippedCalibrationScenesRun) {
+    const auto folder = sourcePath("workflows/erosion-calibration");
+    std::size_t count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        if (entry.path().extension() != ".json") {
+            continue;
+        }
+        ++count;
+        const auto run = tempPath("shipped-" + entry.path().stem().string() + ".h5");
+        std::filesystem::remove(run);
+        const auto r = runTool("hvi-run", entry.path().string() + " -o " + run.string() +
+                                              " -q --threads 1 --resolution-mm 0.2"
+                                              " --end-time-us 0.02");
+        ASSERT_EQ(r.exitCode, 0) << entry.path() << ": " << r.err;
+        hvi::io::RunFileReader reader(run.string());
+        EXPECT_EQ(reader.runFacts()["stop_reason"], "end_time") << entry.path();
+        EXPECT_EQ(reader.scene()["id"], entry.path().stem().string()) << entry.path();
+        std::filesystem::remove(run);
+        std::filesystem::remove(std::filesystem::path(run).replace_extension(".xmf"));
+        std::filesystem::remove(std::filesystem::path(run).replace_extension(".msh"));
+    }
+    EXPECT_GE(count, 5u) << "the A1076/A1077 pair and three 3.125 mm Whipple standoffs";
 }
