@@ -28,9 +28,10 @@
 // makes it penetrate, the pair's momentum is conserved exactly, nothing is ever pushed apart or
 // pulled back (no position corrections, no sticking), and contact cannot create energy.
 // The kinetic energy an impulse takes (a perfectly inelastic normal collision of the contact
-// points) becomes heat, half in the slave (a particle's specific energy, or an element of a
-// node) and half in the master segment's element, as in a real impact where it goes into
-// shock heating, whenever the contact is new (the slave had none in the previous step) or
+// points) becomes heat, shared by mass between the slave (a particle, or the elements around
+// a node) and the master side (the elements under the footprint or around the master
+// nodes), as in a real impact where it goes into shock heating, whenever the contact is new
+// (the slave neither touched nor was pressed on as a master in the previous step) or
 // involves a particle (the compatible SPH energy equation has already paid, from internal
 // energy, for the velocity the constraint removes). A lasting contact between FE nodes and
 // segments only cancels the kick of the forces pressing the pair together, which the
