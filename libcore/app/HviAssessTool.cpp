@@ -35,12 +35,14 @@ std::string summaryLine(const json& v) {
     };
     std::string line = "verdict " + (v["verdict"].is_string() ? v["verdict"].get<std::string>()
                                                               : std::string("none"));
+    if (v["damage_grade"].is_string()) {
+        line += ", grade " + v["damage_grade"].get<std::string>();
+    }
     line += v["complete"].get<bool>() ? " (complete run" : " (PARTIAL run";
-    line += ", t = " + number(v["final_time_us"], "%.3f") + " us)";
-    const json& wall = v["rear_wall"];
-    if (wall.is_object() && wall["axis_confined"].get<bool>()) {
-        line += "; perforated only within " + number(wall["perforation_radius_mm"], "%.3f") +
-                " mm of the axis";
+    line += ", t = " + number(v["final_time_us"], "%.3f") + " us";
+    line += v["verdict_final"] == false ? ", not at rest: provisional)" : ")";
+    if (v["axis_band_only"] == true) {
+        line += "; failed only in the axis band";
     }
     line += "; hole " + number(v["bumper_hole_diameter_mm"], "%.3f") + " mm";
     line += "; depth " + number(v["penetration_depth_mm"], "%.3f") + " mm";

@@ -133,6 +133,7 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
     }
 
     bool confinedWhenPerforated = true; // every perforated snapshot within the axis band
+    bool spallInBand = true;            // every detached spall within the axis band
     for (const auto& info : a.snapshots) {
         io::Snapshot snap =
             info.index == a.first.info.index ? a.first : reader.readSnapshot(info.index);
@@ -156,6 +157,20 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
 
         // Combine over time.
         if (m.rearWall) {
+            const BodyLayout& wall = a.layout.bodies[*a.layout.rearWall];
+            m.grade = damageGrade(*m.rearWall, wall.spacing, a.criteria);
+            if (!a.grade || m.grade > *a.grade) {
+                a.grade = m.grade;
+            }
+            if (isFailure(m.grade) && !a.failureTimeUs) {
+                a.failureTimeUs = m.timeUs;
+            }
+            if (m.rearWall->detachedSpall) {
+                a.spallRadiusMm = std::max(a.spallRadiusMm, m.rearWall->spallRadiusMm);
+                a.spallMassMg = std::max(a.spallMassMg, m.rearWall->spallMassMg);
+                spallInBand &= m.rearWall->spallAxisConfined;
+            }
+            a.bulgeMm = std::max(a.bulgeMm, m.rearWall->bulgeMm);
             if (!a.rearWallPerforated) {
                 a.rearWallPerforated = false;
             }
@@ -225,6 +240,17 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
         }
     }
     a.axisConfined = a.rearWallPerforated.value_or(false) && confinedWhenPerforated;
+    if (a.grade) {
+        a.failed = isFailure(*a.grade);
+        // Every sign of failure lies in the axis band: the perforation (if any) in every
+        // perforated snapshot, and every detached spall.
+        a.axisBandOnly = *a.failed && a.layout.axisymmetric &&
+                         (!a.rearWallPerforated.value_or(false) || a.axisConfined) && spallInBand;
+        const RearWallPerforation& end = *a.last().rearWall;
+        a.atRest = end.wallMaxSpeedKmS <= a.criteria.restSpeedKmS &&
+                   end.approachingItems < static_cast<std::size_t>(
+                                              std::max(1, a.criteria.minCrossingItems));
+    }
     std::sort(a.reachedBodies.begin(), a.reachedBodies.end());
     std::sort(a.perforatedLayers.begin(), a.perforatedLayers.end());
 
@@ -250,21 +276,24 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
             " spacings): in 2D axisymmetry material on the axis cannot move off it, and the "
             "verdict rests on the first element columns there (docs/metrics.md)");
     }
-    if (a.rearWallPerforated && !*a.rearWallPerforated && !a.complete) {
+    if (a.failed && !*a.failed && !a.complete) {
         a.warnings.push_back("NP is provisional: the run did not finish");
     }
-    // A run cut by its end time while the debris is still moving has not seen the end of
-    // the impact: the study's stop rule ends a run once the leading debris is slower than
-    // 0.1 km/s (source study, section 5.4).
-    constexpr double kSpentDebrisKmS = 0.1;
-    if (a.rearWallPerforated && !*a.rearWallPerforated && a.complete && a.hasRunFacts &&
-        stringFact(a.runFacts, "stop_reason", "") == "end_time" && a.last().debris.items > 0 &&
-        a.last().debris.leadingEdgeSpeedKmS > kSpentDebrisKmS) {
+    if (a.failed && !*a.failed && !a.atRest) {
+        const RearWallPerforation& end = *a.last().rearWall;
         a.warnings.push_back(
-            "NP is provisional: the run reached its end time with the debris front still "
-            "moving at " +
-            fmt("%.3g", a.last().debris.leadingEdgeSpeedKmS) + " km/s (the study stops at " +
-            fmt("%.3g", kSpentDebrisKmS) + " km/s); rerun with a later --end-time-us");
+            "NP is provisional: the run ended (" + stringFact(a.runFacts, "stop_reason", a.status) +
+            ") with the rear wall still moving at " +
+            fmt("%.3g", end.wallMaxSpeedKmS) + " km/s and " +
+            std::to_string(end.approachingItems) + " items move toward it at up to " +
+            fmt("%.3g", end.approachingMaxSpeedKmS) + " km/s (at rest: below " +
+            fmt("%.3g", a.criteria.restSpeedKmS) + " km/s); rerun with a later --end-time-us");
+    }
+    if (a.axisBandOnly && !a.axisConfined) {
+        a.warnings.push_back("the rear wall's detached spall lies only within " +
+                             fmt("%.3g", a.spallRadiusMm) +
+                             " mm of the axis: the verdict rests on the axis band "
+                             "(docs/metrics.md)");
     }
     if (a.last().hole && a.last().hole->reachesEdge) {
         a.warnings.push_back("the bumper hole reaches the edge of the bumper as simulated: "

@@ -11,6 +11,7 @@
 
 #include "assess/BumperHole.hpp"
 #include "assess/Criteria.hpp"
+#include "assess/DamageGrade.hpp"
 #include "assess/DebrisCloud.hpp"
 #include "assess/EnergyBudget.hpp"
 #include "assess/MaterialItems.hpp"
@@ -33,6 +34,7 @@ struct SnapshotMetrics {
     double timeUs = 0.0;
     std::optional<BumperHole> hole;
     std::optional<RearWallPerforation> rearWall;
+    DamageGrade grade = DamageGrade::None; ///< of the rear wall (None without one)
     std::optional<PenetrationDepth> penetration;
     std::optional<double> coreDamageWidthMm;
     DebrisCloud debris;
@@ -63,6 +65,14 @@ struct Assessment {
     bool referencePositions = true; ///< every snapshot kept the first one's item slots
 
     // Combined over time.
+    std::optional<bool> failed;            ///< the verdict: P when the worst grade fails
+    std::optional<DamageGrade> grade;      ///< the worst grade over the snapshots
+    std::optional<double> failureTimeUs;   ///< first snapshot with a failing grade
+    bool axisBandOnly = false;             ///< failed, and every sign of it in the axis band
+    double spallRadiusMm = 0.0;            ///< largest detached-spall radius over the snapshots
+    double spallMassMg = 0.0;              ///< largest detached-spall mass over the snapshots
+    double bulgeMm = 0.0;                  ///< largest bulge over the snapshots
+    bool atRest = false;                   ///< the wall and what approaches it, at the end
     std::optional<bool> rearWallPerforated;
     std::optional<double> perforationTimeUs;
     bool throughThicknessFailure = false, materialCrossed = false, detachedSpall = false;

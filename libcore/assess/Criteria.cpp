@@ -14,6 +14,8 @@ json Criteria::toJson() const {
             {"min_crossing_items", minCrossingItems},
             {"link_spacings", linkSpacings},
             {"axis_band_spacings", axisBandSpacings},
+            {"bulge_spacings", bulgeSpacings},
+            {"rest_speed_km_s", restSpeedKmS},
             {"leading_edge_mass_fraction", leadingEdgeMassFraction},
             {"front_mass_fraction", frontMassFraction}};
 }

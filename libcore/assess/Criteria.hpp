@@ -45,6 +45,13 @@ struct Criteria {
     /// (2 h = 2.6 spacings at the default h = 1.3 spacings) of the axis, whose SPH sums reach
     /// the axis ghosts, rounded up to whole columns.
     double axisBandSpacings = 3.0;
+    /// The rear wall bulges (or is dented at its front) when its material in place has moved
+    /// this many spacings off its initial face: one spacing is the smallest displacement the
+    /// discretisation resolves.
+    double bulgeSpacings = 1.0;
+    /// Material slower than this is at rest [km/s]: the source study's stop speed for the
+    /// leading debris (section 5.4), the scene schema's stop_debris_speed_km_s default.
+    double restSpeedKmS = 0.1;
     /// The leading edge of the debris cloud has this fraction of the debris mass ahead of it
     /// (ignores a few stray particles ahead of the cloud).
     double leadingEdgeMassFraction = 1.0e-3;

@@ -129,7 +129,7 @@ Expectation compareWithExpected(const ExpectedBlock& expected, const Assessment&
         ExpectationCheck c;
         c.quantity = "pnp";
         c.expected = block["pnp"];
-        c.actual = a.rearWallPerforated ? json(*a.rearWallPerforated ? "P" : "NP") : json(nullptr);
+        c.actual = a.failed ? json(*a.failed ? "P" : "NP") : json(nullptr);
         c.passed = c.actual == c.expected;
         result.checks.push_back(c);
     }

@@ -10,6 +10,53 @@
 
 namespace hvi::assess {
 
+namespace {
+
+/// Bulge, dent, failed material by half of the wall, and the wall's speed: the grades short
+/// of perforation and whether the wall is at rest (file comment of the header).
+void gradeWallMaterial(const MaterialItems& items, const ShieldLayout& layout, std::size_t wall,
+                       const Criteria& criteria, RearWallPerforation& result) {
+    const BodyLayout& body = layout.bodies[wall];
+    const double s = body.spacing;
+    const double mid = 0.5 * (body.zFront + body.zRear);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (!isBodyMaterial(items, i, layout, wall)) {
+            continue;
+        }
+        const bool failed = isFailed(items, i, layout, criteria);
+        const bool inPlace = isInPlace(items, i, layout, criteria);
+        if (failed && items.z0[i] < mid) {
+            result.failedFrontHalf = true; // eroded or failed at the struck side: a crater
+        }
+        if (!inPlace) {
+            continue;
+        }
+        if (failed && items.z0[i] >= mid) {
+            result.failedRearHalf = true;
+        }
+        result.wallMaxSpeedKmS = std::max(result.wallMaxSpeedKmS, std::fabs(items.vz[i]));
+        const double moved = items.z[i] - items.z0[i];
+        if (items.z0[i] >= body.zRear - s) {
+            result.bulgeMm = std::max(result.bulgeMm, moved);
+        }
+        if (items.z0[i] <= body.zFront + s) {
+            result.dentMm = std::max(result.dentMm, moved);
+        }
+    }
+}
+
+} // namespace
+
+double axisBandMm(const ShieldLayout& layout, std::size_t wall, const Criteria& criteria) {
+    const BodyLayout& body = layout.bodies[wall];
+    if (!layout.axisymmetric || body.rMin > 0.0) {
+        return -1.0;
+    }
+    const double extent = body.rMax - body.rMin;
+    const double columns = std::max(1.0, std::round(extent / body.spacing));
+    return criteria.axisBandSpacings * std::max(body.spacing, extent / columns) * (1.0 + 1e-9);
+}
+
 std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& items,
                                                        const ShieldLayout& layout,
                                                        const Criteria& criteria) {
@@ -81,10 +128,10 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
         surface[k] = zs[j];
     }
 
-    // (b) Material beyond the surface, moving outward.
+    // (b) Material beyond the surface, moving outward; detached spall; what still approaches.
     double crossingRadius = 0.0;
     for (std::size_t i = 0; i < items.size(); ++i) {
-        if (!items.alive[i] || items.vz[i] <= 0.0 || items.body[i] < 0) {
+        if (!items.alive[i] || items.body[i] < 0) {
             continue;
         }
         const long k = binOf(items.r[i]);
@@ -93,24 +140,35 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
         }
         const double beyond = items.z[i] - surface[static_cast<std::size_t>(k)];
         const auto ib = static_cast<std::size_t>(items.body[i]);
+        // Only bodies that started in front of the rear wall (not a witness plate behind it).
+        const bool frontBody = ib != wall && layout.bodies[ib].zFront < body.zRear;
+        if (frontBody && beyond <= 0.0 && items.vz[i] > criteria.restSpeedKmS) {
+            ++result.approachingItems;
+            result.approachingMaxSpeedKmS = std::max(result.approachingMaxSpeedKmS, items.vz[i]);
+        }
+        if (items.vz[i] <= 0.0) {
+            continue;
+        }
         if (ib == wall) {
             if (beyond > 2.0 * s) { // only detached material is beyond the surface
-                result.detachedSpall = true;
+                ++result.spallItems;
+                result.spallMassMg += items.mass[i];
+                result.spallRadiusMm = std::max(result.spallRadiusMm, items.r[i] + 0.5 * s);
             }
             continue;
         }
-        // Only bodies that started in front of the rear wall (not a witness plate behind it).
-        if (layout.bodies[ib].zFront >= body.zRear) {
-            continue;
-        }
-        if (beyond > s) {
+        if (frontBody && beyond > s) {
             ++result.crossingItems;
             result.crossingMassMg += items.mass[i];
             crossingRadius = std::max(crossingRadius, items.r[i]);
         }
     }
-    result.materialCrossed =
-        result.crossingItems >= static_cast<std::size_t>(std::max(1, criteria.minCrossingItems));
+    const auto minItems = static_cast<std::size_t>(std::max(1, criteria.minCrossingItems));
+    result.materialCrossed = result.crossingItems >= minItems;
+    result.detachedSpall = result.spallItems >= minItems;
+    result.spallAxisConfined =
+        result.detachedSpall && result.spallRadiusMm <= axisBandMm(layout, wall, criteria);
+    gradeWallMaterial(items, layout, wall, criteria, result);
     result.perforated = result.throughThicknessFailure || result.materialCrossed;
 
     // Open columns, in the material frame: every item of the wall's material in the bin failed.
@@ -143,11 +201,7 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
             outer = std::max(outer, crossingRadius + 0.5 * s);
         }
         result.perforationRadiusMm = outer;
-        // The band is a number of columns: where the plate's width is not a whole number of
-        // spacings its columns are a little wider (or narrower) than the spacing.
-        const double band = criteria.axisBandSpacings * std::max(s, w);
-        result.axisConfined =
-            layout.axisymmetric && body.rMin <= 0.0 && outer <= band * (1.0 + 1e-9);
+        result.axisConfined = outer <= axisBandMm(layout, wall, criteria);
     }
     return result;
 }

@@ -13,9 +13,23 @@
 //      more than 1.5 spacings apart. So a bulging wall with debris in its dent is not
 //      perforated, failed wall material still in place still holds debris back, and a bin
 //      with no wall material left uses the wall's initial rear face.
+// The damage short of perforation, graded as the tests grade it (DamageGrade.hpp):
+//  * detached spall: at least minCrossingItems items of the rear wall's own body beyond that
+//    surface by more than two spacings and moving outward (vz > 0): material that has left
+//    the wall's back face. The particles of eroded wall elements count (an eroded element
+//    behind the back face, flying away, is wall material ejected from it); material of the
+//    wall thrown back off its front face does not (it is in front of the surface, vz < 0);
+//  * bulge: the wall's own material in place has moved outward, behind its initial rear face,
+//    by at least one spacing (bulgeMm is the largest such displacement of an item of the
+//    wall's rear row);
+//  * attached spall: failed wall material in place in the rear half of the wall (a cavity or
+//    crack under the back face) without a path through the thickness;
+//  * crater: failed or eroded wall material in its front half, or its front face dented by
+//    at least one spacing.
+// The state at the run's end (is it at rest?): the fastest axial speed of the wall's
+// material in place, and the items of other bodies in front of the wall's rear surface that
+// still move toward it faster than Criteria::restSpeedKmS.
 // Informational only (not part of the verdict):
-//  * detached spall, i.e. rear-wall material beyond that surface by more than two spacings,
-//    moving outward;
 //  * the open columns: radial bins (one spacing wide, by reference radius) in which every
 //    wall item across the thickness has failed, a hole through the wall in the material frame;
 //  * the perforation's outer radius: the outer edge of the outermost open column, of the
@@ -41,12 +55,28 @@ struct RearWallPerforation {
     std::size_t crossingItems = 0;
     double crossingMassMg = 0.0;
     std::size_t failedItems = 0;
-    bool detachedSpall = false;
+    bool detachedSpall = false;           ///< at least minCrossingItems spall items
+    std::size_t spallItems = 0;           ///< wall items detached behind its surface
+    double spallMassMg = 0.0;
+    double spallRadiusMm = 0.0;           ///< outermost spall item's r + half a spacing
+    double bulgeMm = 0.0;                 ///< largest outward displacement of the rear row
+    double dentMm = 0.0;                  ///< largest inward-pointing (+z) move of the front row
+    bool failedFrontHalf = false;         ///< failed or eroded wall material in its front half
+    bool failedRearHalf = false;          ///< failed wall material in place in its rear half
+    double wallMaxSpeedKmS = 0.0;         ///< fastest |vz| of the wall's material in place
+    std::size_t approachingItems = 0;     ///< other items in front of it moving toward it
+    double approachingMaxSpeedKmS = 0.0;  ///< their fastest vz
     std::size_t openColumns = 0;      ///< columns failed through the whole thickness
     double openRadiusMm = 0.0;        ///< outer edge of the outermost open column (0: none)
     double perforationRadiusMm = 0.0; ///< outer radius of the perforation (0: not perforated)
     bool axisConfined = false;        ///< perforated, all within the axis band (axisymmetric)
+    bool spallAxisConfined = false;   ///< detached spall, all within the axis band
 };
+
+/// The width of the wall's axis band [mm]: Criteria::axisBandSpacings of its columns (one
+/// spacing wide, or a little more or less where its width is not a whole number of spacings);
+/// negative for a planar run or a wall that does not reach the axis.
+double axisBandMm(const ShieldLayout& layout, std::size_t wall, const Criteria& criteria);
 
 /// Nullopt when the scene has no rear_wall body.
 std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& items,

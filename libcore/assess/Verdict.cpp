@@ -30,8 +30,15 @@ json verdictJson(const Assessment& a) {
     json v;
     v["format"] = "hvi-verdict";
     v["format_version"] = 1;
-    v["verdict"] = a.rearWallPerforated ? json(*a.rearWallPerforated ? "P" : "NP") : json(nullptr);
+    v["verdict"] = a.failed ? json(*a.failed ? "P" : "NP") : json(nullptr);
+    v["damage_grade"] = a.grade ? json(std::string(toString(*a.grade))) : json(nullptr);
+    v["perforation_verdict"] =
+        a.rearWallPerforated ? json(*a.rearWallPerforated ? "P" : "NP") : json(nullptr);
     v["rear_wall_perforated"] = a.rearWallPerforated ? json(*a.rearWallPerforated) : json(nullptr);
+    v["axis_band_only"] = a.failed ? json(a.axisBandOnly) : json(nullptr);
+    // P stands once reached; NP only once the run finished with the wall at rest.
+    v["verdict_final"] =
+        a.failed ? json(*a.failed || (a.complete && a.atRest)) : json(nullptr);
     v["complete"] = a.complete;
     v["run_status"] = a.status;
     const auto stop = a.runFacts.find("stop_reason");
@@ -88,7 +95,17 @@ json verdictJson(const Assessment& a) {
                           {"first_perforated_time_us", num(a.perforationTimeUs)},
                           {"through_thickness_failure", a.throughThicknessFailure},
                           {"material_crossed", a.materialCrossed},
+                          {"damage_grade", std::string(toString(*a.grade))},
+                          {"first_failed_time_us", num(a.failureTimeUs)},
                           {"detached_spall", a.detachedSpall},
+                          {"spall_mass_mg", a.spallMassMg},
+                          {"spall_radius_mm", a.detachedSpall ? json(a.spallRadiusMm) : json(nullptr)},
+                          {"bulge_mm", a.bulgeMm},
+                          {"at_rest", a.atRest},
+                          {"end_wall_speed_km_s", a.last().rearWall->wallMaxSpeedKmS},
+                          {"end_approaching_items", a.last().rearWall->approachingItems},
+                          {"end_approaching_speed_km_s",
+                           a.last().rearWall->approachingMaxSpeedKmS},
                           {"open_columns", a.openColumns},
                           {"open_radius_mm", a.openRadiusMm},
                           {"perforation_radius_mm", perforationRadius},

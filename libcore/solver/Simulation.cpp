@@ -705,6 +705,7 @@ void Simulation::updateProgress() {
     // pressing on it is progress. With a spacing alone (0.16 km/s for 0.04 mm in 0.25 us)
     // HITF03147-3 stopped at 8.9 us with the debris still pushing its rear facesheet at
     // 0.7 km/s, which tore at 12.2 us.
+    updateRearWallActivity(moving);
     const double window = m_scene.run.stopNoNewPenetration;
     const double advance =
         window > 0.0 && moving > 0.0 ? std::min(m_minSpacing, moving * window) : m_minSpacing;
@@ -713,6 +714,55 @@ void Simulation::updateProgress() {
         m_lastProgressTime = m_time;
         m_progressFront = std::max(front, m_progressFront);
         m_progressCentre = std::max(centre, m_progressCentre);
+    }
+}
+
+void Simulation::updateRearWallActivity(double speed) {
+    m_rearWallActive = false;
+    double zRear = -std::numeric_limits<double>::infinity();
+    double rLo = std::numeric_limits<double>::infinity(), rHi = -rLo;
+    std::vector<uint8_t> isWall(m_scene.bodies.size(), 0);
+    for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
+        const auto& body = m_scene.bodies[b];
+        if (body.role == scene::BodyRole::RearWall) {
+            isWall[b] = 1;
+            zRear = std::max(zRear, body.shape.boundZMax() + 0.5 * m_fills[b].spacing);
+            rLo = std::min(rLo, body.shape.boundRMin());
+            rHi = std::max(rHi, body.shape.boundRMax());
+        }
+    }
+    if (!std::isfinite(zRear) || speed <= 0.0) {
+        return;
+    }
+    // The wall itself: its meshed nodes, or its particles still within a wall thickness of
+    // where it was (spall that has flown further is no longer the wall). Other bodies: what
+    // is in front of its rear face, within its radial extent, moving toward it.
+    auto approaching = [&](std::int32_t body, double z, double r, double vz) {
+        return !isWall[static_cast<std::size_t>(body)] && vz > speed && z < zRear && r >= rLo &&
+               r <= rHi;
+    };
+    const auto& ps = m_particles;
+    for (std::size_t i = 0; i < ps.size() && !m_rearWallActive; ++i) {
+        if (!ps.alive[i]) {
+            continue;
+        }
+        const auto b = static_cast<std::size_t>(ps.body[i]);
+        const bool wallMoving = isWall[b] && std::fabs(ps.vz[i]) > speed &&
+                                ps.z[i] < zRear + m_scene.bodies[b].shape.boundZMax() -
+                                              m_scene.bodies[b].shape.boundZMin();
+        m_rearWallActive = wallMoving || approaching(ps.body[i], ps.z[i], ps.r[i], ps.vz[i]);
+    }
+    if (m_fe) {
+        const fe::NodeSet& nodes = m_fe->nodes();
+        for (std::size_t k = 0; k < nodes.size() && !m_rearWallActive; ++k) {
+            if (!nodes.alive[k]) {
+                continue;
+            }
+            const bool wallMoving = isWall[static_cast<std::size_t>(nodes.body[k])] &&
+                                    nodes.elementCount[k] > 0 && std::fabs(nodes.vz[k]) > speed;
+            m_rearWallActive =
+                wallMoving || approaching(nodes.body[k], nodes.z[k], nodes.r[k], nodes.vz[k]);
+        }
     }
 }
 
@@ -735,7 +785,8 @@ std::optional<std::string> Simulation::stopReason() const {
     if (run.stopDebrisSpeed > 0.0 && m_step > 0 && m_debrisSpeed < run.stopDebrisSpeed) {
         return "debris_stopped";
     }
-    if (run.stopNoNewPenetration > 0.0 && anyPenetrated &&
+    // Not while material still moves toward or in the rear wall: the wall may yet fail.
+    if (run.stopNoNewPenetration > 0.0 && anyPenetrated && !m_rearWallActive &&
         m_time - m_lastProgressTime > run.stopNoNewPenetration) {
         return "no_new_penetration";
     }

@@ -135,6 +135,10 @@ private:
     void convertErodedElements();
     void clampSmoothingLengths();
     void updateProgress();
+    /// Sets m_rearWallActive: an item of the rear wall moving faster than `speed` [km/s], or
+    /// an item of another body in front of the wall's rear face, within its radial extent,
+    /// moving toward it faster than `speed`.
+    void updateRearWallActivity(double speed);
     void driftNodes(double dt);
     void kickNodes(double dt);
 
@@ -171,6 +175,9 @@ private:
     double m_progressFront = -1e300;
     double m_progressCentre = -1e300; ///< furthest centre of mass of the moving material
     double m_debrisSpeed = 0.0; ///< fastest forward speed of any alive particle [km/s]
+    /// Material still moves toward or in the rear wall faster than the stop speed: the
+    /// no-new-penetration rule waits (updateRearWallActivity).
+    bool m_rearWallActive = false;
     double m_minSpacing = 0.0;
 
     // The evolving set: every particle that has been evaluated or pushed by contact since

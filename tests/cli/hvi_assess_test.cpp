@@ -84,7 +84,7 @@ TEST(HviAssessCli, GoodRunGivesASchemaValidVerdict) {
     EXPECT_NEAR(v["bumper_hole_diameter_mm"].get<double>(), 3.0, 1e-9);
     EXPECT_EQ(v["provenance"]["tool"], "hvi-assess");
     EXPECT_EQ(v["provenance"]["input_file"], run.string());
-    EXPECT_NE(r.err.find("verdict NP (complete run"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("verdict NP, grade none (complete run"), std::string::npos) << r.err;
 }
 
 TEST(HviAssessCli, VerdictGoesToStdoutByDefault) {

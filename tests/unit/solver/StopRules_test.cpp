@@ -8,9 +8,12 @@
 // speed's 0.025 mm but less than the 0.04 mm spacing. With a spacing as the progress step the
 // run stopped at about 0.25 us (no_new_penetration) with the slab still in flight, as
 // HITF03147-3 stopped with its debris pushing the rear facesheet at 0.7 km/s.
+// And the rule waits while the rear wall still moves, or material in front of it still moves
+// toward it, faster than the stop speed (a slab ringing on a thick wall).
 #include "SceneRun.hpp"
 #include "SyntheticRun.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <string>
 
@@ -46,4 +49,56 @@ TEST(StopRules, MaterialFasterThanTheStopSpeedKeepsTheRunGoing) {
 TEST(StopRules, MaterialSlowerThanTheStopSpeedStopsIt) {
     // The same slab at 0.08 km/s: the debris-speed rule ends the run.
     EXPECT_EQ(stopOf(0.08), "debris_stopped");
+}
+
+namespace {
+
+struct SlabOnWall {
+    std::string reason;
+    double fastestAt05 = 0.0; ///< fastest wall |vz| or slab vz at 0.5 us [km/s]
+};
+
+/// A slab that has passed a bumper strikes a thick rear wall at 0.3 km/s; the wall and the
+/// slab ring on. The front of the moving material stops at the wall and the material behind
+/// it slows below the stop speed and speeds up again, so the front falls back and stops
+/// advancing: before the rear-wall activity check the no-new-penetration rule ended this run
+/// at 0.5 us with the wall still moving at more than the stop speed.
+SlabOnWall slabOnWall() {
+    json slab = test::plateBody("slab", "projectile", 0.3, 0.4, 0.8);
+    slab["velocity"] = {{"z_km_s", 0.3}};
+    const json doc = {{"sph", {{"particle_spacing_mm", 0.04}}},
+                      {"run",
+                       {{"end_time_us", 1.5},
+                        {"stop_debris_speed_km_s", 0.1},
+                        {"stop_no_new_penetration_us", 0.25}}},
+                      {"domain", {{"radius_mm", 1.2}}},
+                      {"bodies",
+                       {slab, test::plateBody("bumper", "bumper", 0.0, 0.2, 1.0),
+                        test::plateBody("wall", "rear_wall", 0.74, 0.8, 1.0)}}};
+    const auto scene = test::makeScene(doc);
+    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    SlabOnWall result;
+    bool sampled = false;
+    test::runUntil(sim, 1.5, [&](const solver::Simulation& s) {
+        if (sampled || s.time() < 0.5) {
+            return;
+        }
+        sampled = true;
+        const auto& ps = s.particles();
+        for (std::size_t i = 0; i < ps.size(); ++i) {
+            const bool wall = ps.body[i] == 2;
+            const double v = wall ? std::fabs(ps.vz[i]) : (ps.body[i] == 0 ? ps.vz[i] : 0.0);
+            result.fastestAt05 = std::max(result.fastestAt05, v);
+        }
+    });
+    result.reason = sim.stopReason().value_or("none");
+    return result;
+}
+
+} // namespace
+
+TEST(StopRules, NoNewPenetrationWaitsWhileTheRearWallStillMoves) {
+    const SlabOnWall run = slabOnWall();
+    EXPECT_GT(run.fastestAt05, 0.1); // the old stop time: the wall was still being struck
+    EXPECT_NE(run.reason, "no_new_penetration");
 }
