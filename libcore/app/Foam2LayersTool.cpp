@@ -45,15 +45,96 @@ PanelInputKind foamPanelInputKind() {
     kind.otherTypesHint = "foam2layers reads foam panels; hcomb2rings reads honeycomb_sandwich";
     kind.defaultId = "foam_panel";
     kind.sizingPanelDrops = {"core_thickness_source", "rear_wall_yield_ksi", "rear_wall_yield_MPa"};
-    kind.materialPointers = {"/threat/material", "/panel/material"};
+    kind.materialPointers = {"/threat/material", "/panel/material",
+                             "/panel/front_facesheet_material", "/panel/rear_facesheet_material",
+                             "/panel/core_material"};
     return kind;
 }
 
-SceneResult buildFoamScene(const PanelInput& input, const json& provenance) {
+namespace {
+
+double densityOf(const std::string& material) {
+    return materialDensityGCm3(material).value_or(geometry::kMissing);
+}
+
+/// The facesheets' areal mass [g/cm2].
+double facesheetArealMassGCm2(const geometry::PanelFrame& frame) {
+    return units::mmToCm(densityOf(frame.frontFacesheetMaterial) * frame.frontFacesheetMm +
+                         densityOf(frame.rearFacesheetMaterial) * frame.rearFacesheetMm);
+}
+
+/// The keys one panel type requires and the other may not hold, all reported at once.
+void checkPanelTypeKeys(const PanelInput& input, bool whipple) {
+    std::vector<InputIssue> issues;
+    for (const char* key : {"relative_density_percent", "ppi", "core_material"}) {
+        const std::string pointer = std::string("/panel/") + key;
+        const bool given = input.resolved.contains(json::json_pointer(pointer));
+        if (whipple && given) {
+            issues.push_back({input.origin.labelOf(pointer), pointer,
+                              "is given for a Whipple shield (panel type whipple has no core)",
+                              "no foam keys with type whipple, or type foam_sandwich"});
+        } else if (!whipple && !given && std::string(key) != "core_material") {
+            issues.push_back({input.origin.labelOf(pointer), pointer, "required key is missing",
+                              std::string("the foam's ") +
+                                  (std::string(key) == "ppi" ? "pores per inch [1/in], > 0"
+                                                             : "relative density [%], 0..100") +
+                                  " (or panel type whipple for a shield without a core)"});
+        }
+    }
+    if (!issues.empty()) {
+        throw InputError(std::move(issues));
+    }
+}
+
+/// A Whipple shield: the panel frame with nothing between the facesheets.
+SceneResult buildWhippleScene(const PanelInput& input, const json& provenance) {
     geometry::SceneBuilder builder(input.threat(), input.frame(), input.numerics());
     const geometry::PanelFrame frame = builder.frame();
-    const double density =
-        materialDensityGCm3(frame.facesheetMaterial).value_or(geometry::kMissing);
+    SceneResult result;
+    for (const auto& warning : builder.warnings()) {
+        result.warnings.push_back(warning.message);
+    }
+    json summary = {
+        {"core", "none"},
+        {"shield", "whipple"},
+        {"input_kind", input.fromSizing ? "ble-size sizing" : "foam_panel"},
+        {"standoff_mm", frame.coreThicknessMm},
+        {"standoff_convention", "gap from the back of the bumper to the front of the rear wall "
+                                "(the NASA JSC Whipple equation's S)"},
+        {"panel_areal_mass_g_cm2", facesheetArealMassGCm2(frame)},
+        {"warnings", result.warnings},
+    };
+    const geometry::ThreatSpec threat = input.threat();
+    const std::string description =
+        "Whipple shield: " + formatNumber(frame.frontFacesheetMm) + " mm " +
+        frame.frontFacesheetMaterial + " bumper, " + formatNumber(frame.coreThicknessMm) +
+        " mm gap, " + formatNumber(frame.rearFacesheetMm) + " mm " + frame.rearFacesheetMaterial +
+        " rear wall; " + formatNumber(threat.diameterMm) + " mm " + threat.material +
+        " sphere at " + formatNumber(threat.velocityKmS) + " km/s";
+    result.scene = builder.sceneJson(input.id(), description, summary, provenance);
+    result.feRectangles = builder.feRectangles();
+    result.report = {input.id() + ": Whipple shield, no core: " +
+                     formatNumber(frame.frontFacesheetMm) + " mm bumper, " +
+                     formatNumber(frame.coreThicknessMm) + " mm gap, " +
+                     formatNumber(frame.rearFacesheetMm) + " mm rear wall"};
+    for (const auto& line : sharedReport(builder)) {
+        result.report.push_back(line);
+    }
+    return result;
+}
+
+} // namespace
+
+SceneResult buildFoamScene(const PanelInput& input, const json& provenance) {
+    const bool whipple = input.text("/panel/type", "foam_sandwich") == "whipple";
+    checkPanelTypeKeys(input, whipple);
+    if (whipple) {
+        return buildWhippleScene(input, provenance);
+    }
+    geometry::SceneBuilder builder(input.threat(), input.frame(), input.numerics());
+    const geometry::PanelFrame frame = builder.frame();
+    const std::string material = input.text("/panel/core_material", frame.facesheetMaterial);
+    const double density = densityOf(material);
 
     geometry::FoamCoreSpec spec;
     spec.standoffMm = frame.coreThicknessMm;
@@ -80,7 +161,6 @@ SceneResult buildFoamScene(const PanelInput& input, const json& provenance) {
     }
 
     // Layer bodies: one per disk, or one per segment ("core_layer_03_seg_002").
-    const std::string material = frame.facesheetMaterial;
     std::map<int, int> segmentsPerLayer;
     int largestSegment = 1;
     for (const auto& layer : stack.layers) {
@@ -110,8 +190,7 @@ SceneResult buildFoamScene(const PanelInput& input, const json& provenance) {
         result.warnings.push_back(warning.message);
     }
 
-    const double facesheetArealGCm2 =
-        density * units::mmToCm(frame.frontFacesheetMm + frame.rearFacesheetMm);
+    const double facesheetArealGCm2 = facesheetArealMassGCm2(frame);
     const double relativeDifference = stack.reducedArealMassGCm2 / stack.realArealMassGCm2 - 1.0;
     json summary = {
         {"core", "foam"},
@@ -181,10 +260,17 @@ Foam2LayersTool::Foam2LayersTool()
     : SceneWriterTool("foam2layers",
                       "Foam-core sandwich panel -> 2D axisymmetric impact scene for hvi-run: the "
                       "open-cell foam core becomes a mass-conserved stack of flat layers "
-                      "(effective PPI = ppi_factor x PPI, pores rounded up, layers = pores - 1)",
+                      "(effective PPI = ppi_factor x PPI, pores rounded up, layers = pores - 1); "
+                      "with --panel-type whipple, a Whipple shield (the same frame, no core)",
                       foamPanelInputKind()) {}
 
 void Foam2LayersTool::addCoreOptions(CLI::App& app, FlagOverlay& flags) {
+    flags.addString(app, "--panel-type", "/panel/type",
+                    "foam_sandwich (default) or whipple: no core, the facesheets are the bumper "
+                    "and the rear wall and --standoff-mm the gap between them",
+                    {"foam_sandwich", "whipple"});
+    flags.addString(app, "--core-material", "/panel/core_material",
+                    "Foam ligament material (default: --material)");
     flags.addNumber(app, "--relative-density-percent", "/panel/relative_density_percent",
                     "Foam relative density [%], 0 < value < 100");
     flags.addNumber(app, "--ppi", "/panel/ppi", "Foam pores per inch [1/in], > 0");

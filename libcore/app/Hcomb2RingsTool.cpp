@@ -45,7 +45,8 @@ PanelInputKind honeycombPanelInputKind() {
     kind.sizingPanelDrops = {"core_thickness_source", "equation", "rear_wall_yield_ksi",
                              "rear_wall_yield_MPa"};
     kind.sizingPanelRenames = {{"facesheet_material", "material"}};
-    kind.materialPointers = {"/threat/material", "/panel/material", "/panel/foil_material"};
+    kind.materialPointers = {"/threat/material", "/panel/material", "/panel/foil_material",
+                             "/panel/front_facesheet_material", "/panel/rear_facesheet_material"};
     return kind;
 }
 
@@ -54,8 +55,9 @@ SceneResult buildHoneycombScene(const PanelInput& input, const json& provenance)
     const geometry::PanelFrame frame = builder.frame();
     const std::string foilMaterial = input.text("/panel/foil_material", frame.facesheetMaterial);
     const double foilDensity = materialDensityGCm3(foilMaterial).value_or(geometry::kMissing);
-    const double facesheetDensity =
-        materialDensityGCm3(frame.facesheetMaterial).value_or(geometry::kMissing);
+    auto densityOf = [](const std::string& material) {
+        return materialDensityGCm3(material).value_or(geometry::kMissing);
+    };
 
     geometry::HoneycombCoreSpec spec;
     spec.coreThicknessMm = frame.coreThicknessMm;
@@ -100,7 +102,8 @@ SceneResult buildHoneycombScene(const PanelInput& input, const json& provenance)
     }
 
     const double facesheetArealGCm2 =
-        facesheetDensity * units::mmToCm(frame.frontFacesheetMm + frame.rearFacesheetMm);
+        units::mmToCm(densityOf(frame.frontFacesheetMaterial) * frame.frontFacesheetMm +
+                      densityOf(frame.rearFacesheetMaterial) * frame.rearFacesheetMm);
     const double relativeDifference = rings.massRatio - 1.0;
     json summary = {
         {"core", "honeycomb"},

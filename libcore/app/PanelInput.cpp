@@ -152,7 +152,8 @@ void checkAndNormalise(json& resolved, const PanelInputKind& kind, const InputOr
                 "rear facesheet thickness [mm], > 0 (or facesheet_mm for both)");
         }
     }
-    if (issues.empty()) {
+    // A Whipple's gap may be shorter than its plates are thick; a sandwich's core may not.
+    if (issues.empty() && panel.value("type", "") != "whipple") {
         const double front = panel["front_facesheet_mm"].get<double>();
         const double rear = panel["rear_facesheet_mm"].get<double>();
         const double core = panel["core_thickness_mm"].get<double>();
@@ -206,6 +207,8 @@ geometry::PanelFrame PanelInput::frame() const {
     frame.coreThicknessMm = number("/panel/core_thickness_mm");
     frame.rearFacesheetMm = number(kRear);
     frame.facesheetMaterial = text("/panel/material", frame.facesheetMaterial);
+    frame.frontFacesheetMaterial = text("/panel/front_facesheet_material", frame.facesheetMaterial);
+    frame.rearFacesheetMaterial = text("/panel/rear_facesheet_material", frame.facesheetMaterial);
     return frame;
 }
 

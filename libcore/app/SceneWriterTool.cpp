@@ -39,6 +39,10 @@ void addSharedSceneFlags(CLI::App& app, FlagOverlay& flags) {
     flags.addString(app, "--material", "/panel/material",
                     "Panel material name: facesheets, and the foam or (by default) the "
                     "honeycomb foil (default Al6061-T6)");
+    flags.addString(app, "--front-facesheet-material", "/panel/front_facesheet_material",
+                    "Front facesheet (bumper) material (default: --material)");
+    flags.addString(app, "--rear-facesheet-material", "/panel/rear_facesheet_material",
+                    "Rear facesheet (rear wall) material (default: --material)");
     flags.addNumber(app, "--particle-spacing-mm", "/numerics/particle_spacing_mm",
                     "SPH particle spacing and FE element size [mm], > 0 (default: the calibrated "
                     "0.015)");

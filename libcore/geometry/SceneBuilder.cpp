@@ -207,7 +207,7 @@ std::vector<SceneBody> SceneBuilder::bodies() const {
     bumper.zFrontMm = 0.0;
     bumper.thicknessMm = m_frame.frontFacesheetMm;
     bumper.outerRadiusMm = m_domainRadius.value;
-    bumper.material = m_frame.facesheetMaterial;
+    bumper.material = m_frame.frontFacesheetMaterial;
     bumper.discretization = Discretization::Sph;
     all.push_back(bumper);
 
@@ -219,7 +219,7 @@ std::vector<SceneBody> SceneBuilder::bodies() const {
     rear.zFrontMm = m_frame.frontFacesheetMm + m_frame.coreThicknessMm;
     rear.thicknessMm = m_frame.rearFacesheetMm;
     rear.outerRadiusMm = m_domainRadius.value;
-    rear.material = m_frame.facesheetMaterial;
+    rear.material = m_frame.rearFacesheetMaterial;
     rear.discretization = m_numerics.rearWallDiscretization;
     all.push_back(rear);
     return all;

@@ -79,7 +79,9 @@ struct PanelFrame {
     double frontFacesheetMm = kMissing; ///< t_f, the bumper
     double coreThicknessMm = kMissing;  ///< S, the standoff between the facesheets
     double rearFacesheetMm = kMissing;  ///< t_r, the rear wall
-    std::string facesheetMaterial = "Al6061-T6";
+    std::string facesheetMaterial = "Al6061-T6";      ///< the core's default material too
+    std::string frontFacesheetMaterial = "Al6061-T6"; ///< the bumper
+    std::string rearFacesheetMaterial = "Al6061-T6";  ///< the rear wall
 };
 
 /// Numerical choices; NaN (kMissing) domain radius or end time means "use the rule".

@@ -282,6 +282,45 @@ TEST(Foam2LayersCli, WritesToStdoutByDefault) {
     EXPECT_EQ(bodiesWithRole(scene, "core_layer").size(), 9u);
 }
 
+// A Whipple shield is the panel frame with an empty core: projectile, bumper (SPH), rear wall
+// (FE) at the gap behind the bumper, each with its own material.
+TEST(Foam2LayersCli, WritesAWhippleScene) {
+    const json scene = sceneOf("whipple_A1076.json", {"--rear-facesheet-material", "Al2024-T3"},
+                               "whipple");
+    ASSERT_FALSE(scene.empty());
+    EXPECT_TRUE(validScene(scene));
+    EXPECT_TRUE(bodiesWithRole(scene, "core_layer").empty());
+    const auto bumper = bodiesWithRole(scene, "bumper");
+    const auto wall = bodiesWithRole(scene, "rear_wall");
+    const auto projectile = bodiesWithRole(scene, "projectile");
+    ASSERT_EQ(bumper.size(), 1u);
+    ASSERT_EQ(wall.size(), 1u);
+    ASSERT_EQ(projectile.size(), 1u);
+    EXPECT_EQ(bumper[0]["material"], "Al6061-T6");
+    EXPECT_EQ(wall[0]["material"], "Al2024-T3");
+    EXPECT_EQ(projectile[0]["material"], "Al2017-T4");
+    EXPECT_EQ(wall[0]["discretization"], "fe");
+    // The gap is the JSC standoff: from the bumper's back (0.64) to the wall's front.
+    EXPECT_TRUE(near("rear wall front", wall[0]["shape"]["z_front_mm"].get<double>(), 60.64, 1e-12,
+                     0.0));
+    EXPECT_TRUE(near("rear wall thickness", wall[0]["shape"]["thickness_mm"].get<double>(), 0.41,
+                     1e-12, 0.0));
+    EXPECT_EQ(scene["summary"]["shield"], "whipple");
+}
+
+TEST(Foam2LayersCli, AFoamPanelWithoutItsPpiIsRefusedWithAHint) {
+    const auto out = freshOutput("foam_no_ppi.scene.json");
+    const auto run = runTool(kTool,
+                             {"--diameter-mm", "1", "--velocity-km-s", "6", "--facesheet-mm",
+                              "0.25", "--standoff-mm", "12.7", "--relative-density-percent", "7",
+                              "-o", out.string()},
+                             "foam_no_ppi");
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_TRUE(oneErrorLine(run, kTool, "<flags>", "/panel/ppi"));
+    EXPECT_NE(run.err.find("panel type whipple"), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // A sizing.json from ble-size: only threat and panel are read; same scene as the foam spec.
 TEST(Foam2LayersCli, ReadsBleSizeSizing) {
     ToolRun run;
@@ -293,7 +332,7 @@ TEST(Foam2LayersCli, ReadsBleSizeSizing) {
     EXPECT_EQ(scene["summary"]["input_kind"], "ble-size sizing");
     // The projectile density is not carried over, and the tool says so.
     EXPECT_NE(run.err.find("warning: threat density_g_cm3"), std::string::npos) << run.err;
-    EXPECT_FALSE(scene["provenance"]["resolved_input"]["panel"].contains("type"));
+    EXPECT_EQ(scene["provenance"]["resolved_input"]["panel"]["type"], "foam_sandwich");
 }
 
 TEST(Foam2LayersCli, SizingWithObliqueImpactIsRejected) {
@@ -433,7 +472,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"bad_wrong_type.json", "/panel/core_thickness_mm", "\"2 in\""},
         BadFile{"bad_facesheet_conflict.json", "/panel/facesheet_mm", "front_facesheet_mm"},
         BadFile{"bad_rear_facesheet_missing.json", "/panel/rear_facesheet_mm", "missing"},
-        BadFile{"bad_material.json", "/panel/material", "Unobtainium"}),
+        BadFile{"bad_material.json", "/panel/material", "Unobtainium"},
+        BadFile{"bad_whipple_with_ppi.json", "/panel/ppi", "Whipple shield"}),
     [](const ::testing::TestParamInfo<BadFile>& param) {
         std::string name = param.param.fixture.substr(4);
         name = name.substr(0, name.size() - 5);
