@@ -1,0 +1,78 @@
+#include "app/HviValidateTool.hpp"
+
+#include "io/AtomicOutput.hpp"
+#include "validation/CaseInputs.hpp"
+#include "validation/ValidationReport.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+namespace hvi::app {
+
+namespace fs = std::filesystem;
+
+HviValidateTool::HviValidateTool()
+    : tool::Tool("hvi-validate", "Validation cases (the source study's and the NASA development "
+                                 "set): list them, write each one's tool inputs, and report "
+                                 "the verdicts against the tests") {}
+
+void HviValidateTool::addOptions(CLI::App& app) {
+    app.add_option("action", m_action, "list | inputs | report")
+        ->required()
+        ->check(CLI::IsMember({"list", "inputs", "report"}));
+    app.add_option("case", m_case, "Case id (inputs)");
+    app.add_option("--set", m_set,
+                   "Cases: all (default), source_study, development, or quick (the bracketing "
+                   "pairs A1076/A1077 and HITF03147-2/-3)");
+    app.add_option("--out-dir", m_outDir, "inputs: where to write; report: the case directories");
+    app.add_option("-o,--output", m_output, "report: the markdown file ('-' = stdout)");
+    app.add_option("--resolution-mm", m_resolution, "report: the spacing the runs used [mm]");
+}
+
+void HviValidateTool::execute() {
+    std::vector<validation::Case> cases;
+    try {
+        cases = validation::selectCases(m_set);
+    } catch (const std::invalid_argument& e) {
+        throw InputError("<flags>", "/set", e.what(), "all, source_study, development, quick or ci");
+    }
+    if (m_action == "list") {
+        for (const auto& c : cases) {
+            std::cout << c.id << "\n";
+        }
+        return;
+    }
+    if (m_outDir.empty()) {
+        throw InputError("<flags>", "/out_dir", "--out-dir is missing",
+                         "the directory of the case files");
+    }
+    if (m_action == "inputs") {
+        const validation::Case* c = nullptr;
+        try {
+            c = &validation::findCase(m_case);
+        } catch (const std::invalid_argument& e) {
+            throw InputError("<flags>", "/case", e.what(), "an id that 'hvi-validate list' prints");
+        }
+        const fs::path dir(m_outDir);
+        fs::create_directories(dir);
+        io::writeTextAtomically(dir / "panel.json", validation::panelInput(*c).dump(2) + "\n");
+        io::writeTextAtomically(dir / "constraints.json",
+                                validation::bleConstraints(*c).dump(2) + "\n");
+        io::writeTextAtomically(dir / "writer", validation::sceneWriterOf(*c) + "\n");
+        info(c->id + ": " + validation::toString(c->shield) + ", test " + c->result + " -> " +
+             dir.string());
+        return;
+    }
+    validation::ReportOptions options;
+    options.selection = m_set;
+    options.resolution = m_resolution;
+    const std::string text = validation::validationReport(cases, m_outDir, options);
+    if (m_output == "-") {
+        std::cout << text;
+    } else {
+        io::writeTextAtomically(m_output, text);
+    }
+}
+
+} // namespace hvi::app

@@ -1,0 +1,37 @@
+// hvi-validate: the validation cases (libcore/validation) for the workflow that measures the
+// toolkit's verdicts against the tests (workflows/validate.mk, docs/validation.md).
+//
+//   hvi-validate list [--set all|source_study|development|quick]
+//       prints the case ids, one per line (Make reads them);
+//   hvi-validate inputs CASE --out-dir DIR
+//       writes DIR/panel.json (the scene writer's input), DIR/constraints.json (ble-size's)
+//       and DIR/writer (the scene writer's name);
+//   hvi-validate report --out-dir DIR [--set NAME] [--resolution-mm TEXT] -o FILE
+//       writes the markdown report from DIR/<case>/verdict.json and ble.json.
+// Bad input (an unknown action, case or set) is one line naming it, exit 2, nothing written.
+#pragma once
+
+#include "tool/Tool.hpp"
+
+#include <string>
+
+namespace hvi::app {
+
+class HviValidateTool : public tool::Tool {
+public:
+    HviValidateTool();
+
+protected:
+    void addOptions(CLI::App& app) override;
+    void execute() override;
+
+private:
+    std::string m_action;
+    std::string m_case;
+    std::string m_set = "all";
+    std::string m_outDir;
+    std::string m_output = "-";
+    std::string m_resolution;
+};
+
+} // namespace hvi::app

@@ -1,0 +1,102 @@
+// hvi-validate and the validate workflow through the built executables: the case lists, one
+// case's inputs (and that the scene writer and ble-size accept them), bad input, and the
+// CI-sized `make -C workflows validate SET=ci` end to end at a coarse spacing (0.1 mm: about
+// a minute on two cores).
+#include "RunTool.hpp"
+#include "TestPaths.hpp"
+#include "io/JsonInput.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+
+using namespace hvi::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+int lineCount(const std::string& text) {
+    int n = 0;
+    for (char ch : text) {
+        n += ch == '\n' ? 1 : 0;
+    }
+    return n;
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+} // namespace
+
+TEST(HviValidateCli, ListsEveryCaseOfEachSet) {
+    // 12 source-study cases (3 Whipple, 8 foam, 1 honeycomb) and 116 development shots.
+    EXPECT_EQ(lineCount(runTool("hvi-validate", "list --set source_study").out), 12);
+    EXPECT_EQ(lineCount(runTool("hvi-validate", "list --set development").out), 116);
+    EXPECT_EQ(lineCount(runTool("hvi-validate", "list").out), 128);
+    EXPECT_EQ(runTool("hvi-validate", "list --set quick").out,
+              "HITF03147-2\nHITF03147-3\nA1076\nA1077\n");
+}
+
+TEST(HviValidateCli, InputsAreAcceptedByTheTools) {
+    for (const std::string id : {"WPL-0463", "foam-9323", "hc-A1"}) {
+        const fs::path dir = tempPath("validate_inputs/" + id);
+        fs::remove_all(dir);
+        const auto r = runTool("hvi-validate", "inputs " + id + " --out-dir " + dir.string());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        std::string writer = readText(dir / "writer");
+        writer.pop_back();
+        const auto scene = runTool(writer, (dir / "panel.json").string() +
+                                               " --particle-spacing-mm 0.05 -o " +
+                                               (dir / "scene.json").string());
+        EXPECT_EQ(scene.exitCode, 0) << id << ": " << scene.err;
+        const auto ble = runTool("ble-size", (dir / "constraints.json").string() + " -o " +
+                                                 (dir / "ble.json").string());
+        EXPECT_EQ(ble.exitCode, 0) << id << ": " << ble.err;
+    }
+}
+
+TEST(HviValidateCli, AnUnknownCaseIsOneLineAndNoOutput) {
+    const fs::path dir = tempPath("validate_inputs/nope");
+    fs::remove_all(dir);
+    const auto r = runTool("hvi-validate", "inputs NOPE-1 --out-dir " + dir.string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("/case: no validation case 'NOPE-1'"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "panel.json"));
+    const auto set = runTool("hvi-validate", "list --set everything");
+    EXPECT_EQ(set.exitCode, 2);
+    EXPECT_NE(set.err.find("/set"), std::string::npos) << set.err;
+}
+
+TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
+    const fs::path out = tempPath("validate_ci");
+    fs::remove_all(out);
+    const std::string command = "make -s -C " + sourcePath("workflows").string() +
+                                " validate SET=ci RESOLUTION=0.1 THREADS=1 BIN=" +
+                                toolPath("hvi-run").parent_path().parent_path().string() +
+                                " OUT=" + out.string() + " >" + (out.string() + ".log") +
+                                " 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readText(out.string() + ".log");
+    const std::string report = readText(out / "validation.md");
+    for (const char* id : {"| HITF03147-2 | foam |", "| A1076 | whipple |"}) {
+        EXPECT_NE(report.find(id), std::string::npos) << report;
+    }
+    EXPECT_NE(report.find("Not run: 0 of 2"), std::string::npos) << report;
+    for (const char* id : {"HITF03147-2", "A1076"}) {
+        const auto v = hvi::io::readJsonFile((out / id / "verdict.json").string());
+        EXPECT_TRUE(v["verdict"].is_string()) << id;
+        EXPECT_TRUE(fs::exists(out / id / "ble.json")) << id;
+    }
+    // A second make has nothing left to do: every target is there.
+    const std::string again = "make -q -C " + sourcePath("workflows").string() +
+                              " validate SET=ci RESOLUTION=0.1 BIN=" +
+                              toolPath("hvi-run").parent_path().parent_path().string() +
+                              " OUT=" + out.string() + " >/dev/null 2>&1";
+    EXPECT_EQ(std::system(again.c_str()), 0);
+}

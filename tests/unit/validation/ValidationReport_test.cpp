@@ -1,0 +1,53 @@
+// The validation report's counting (validation/ValidationReport.hpp): three cases with hand-
+// written verdicts (a right P, a false alarm, a P on the axis band alone) and one not run.
+#include "TestPaths.hpp"
+#include "validation/ValidationReport.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+using namespace hvi;
+namespace fs = std::filesystem;
+
+namespace {
+
+void writeCase(const fs::path& dir, const std::string& verdict, bool axisOnly, double bleRatio) {
+    fs::create_directories(dir);
+    nlohmann::json v = {{"verdict", verdict},         {"damage_grade", "perforation"},
+                        {"verdict_final", true},      {"axis_band_only", axisOnly},
+                        {"wall_time_s", 10.0},        {"energy_error", 1e-3}};
+    std::ofstream(dir / "verdict.json") << v.dump();
+    nlohmann::json b = {{"performance",
+                         {{"verdict", bleRatio >= 1.0 ? "P" : "NP"},
+                          {"critical_over_projectile_diameter", 1.0 / bleRatio}}}};
+    std::ofstream(dir / "ble.json") << b.dump();
+}
+
+} // namespace
+
+TEST(ValidationReport, CountsAgreementPerShieldAndTheConfusionMatrix) {
+    const auto cases = validation::selectCases("quick"); // -2 NP, -3 P, A1076 P, A1077 NP
+    const fs::path out = test::tempPath("validation_report");
+    fs::remove_all(out);
+    writeCase(out / "HITF03147-2", "P", false, 1.2);  // false alarm; the BLE too
+    writeCase(out / "HITF03147-3", "P", false, 1.3);  // right
+    writeCase(out / "A1076", "P", true, 1.8);         // right, on the axis band alone
+    // A1077 not run: only its ble.json.
+    fs::create_directories(out / "A1077");
+    std::ofstream(out / "A1077" / "ble.json")
+        << R"({"performance": {"verdict": "NP", "critical_over_projectile_diameter": 1.25}})";
+    const std::string md = validation::validationReport(cases, out, {"quick", "0.04"});
+    EXPECT_NE(md.find("| foam | 2 | 1/2 (50 %) | 1/2 (50 %) | 1/2 (50 %) |"), std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| whipple | 2 | 1/1 (100 %) | 1/1 (100 %) | 2/2 (100 %) |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("P/P 2, P/NP (missed) 0, NP/P (false alarm) 1, NP/NP 0"), std::string::npos)
+        << md;
+    EXPECT_NE(md.find("axis band alone: 1"), std::string::npos) << md;
+    EXPECT_NE(md.find("Not run: 1 of 4"), std::string::npos) << md;
+    EXPECT_NE(md.find("| A1077 | whipple | 2 | 6.77 | NP | not run |"), std::string::npos) << md;
+    EXPECT_NE(md.find("Wall time of the runs: 30 s"), std::string::npos) << md;
+}

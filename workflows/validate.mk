@@ -1,0 +1,46 @@
+# make validate: the verdicts of the validation cases against the tests (docs/validation.md).
+ROOT := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
+BIN ?= $(ROOT)/build/tools
+SET ?= quick
+RESOLUTION ?= 0.04
+THREADS ?= 1
+END_TIME_US ?=
+OUT ?= $(ROOT)/out/validate/$(SET)-$(RESOLUTION)
+REPORT ?= $(OUT)/validation.md
+
+HVI_VALIDATE := $(BIN)/hvi-validate/hvi-validate
+CASES := $(shell $(HVI_VALIDATE) list --set $(SET))
+ifeq ($(strip $(CASES)),)
+$(error hvi-validate listed no case for SET=$(SET): build the toolkit first (scripts/build.sh))
+endif
+END_TIME_FLAG := $(if $(END_TIME_US),--end-time-us $(END_TIME_US))
+
+.PHONY: validate
+.SECONDARY:
+.DELETE_ON_ERROR:
+
+validate: $(REPORT)
+
+$(REPORT): $(foreach c,$(CASES),$(OUT)/$(c)/verdict.json $(OUT)/$(c)/ble.json)
+	$(HVI_VALIDATE) report --set $(SET) --out-dir $(OUT) --resolution-mm $(RESOLUTION) -o $@
+	@echo "validate: $(words $(CASES)) cases -> $@"
+
+$(OUT)/%/panel.json:
+	$(HVI_VALIDATE) inputs $* --out-dir $(OUT)/$* -q
+
+$(OUT)/%/ble.json: $(OUT)/%/panel.json
+	$(BIN)/ble-size/ble-size $(OUT)/$*/constraints.json -o $@ 2>$(OUT)/$*/ble.log
+
+$(OUT)/%/scene.json: $(OUT)/%/panel.json
+	w=$$(cat $(OUT)/$*/writer); $(BIN)/$$w/$$w $< --particle-spacing-mm $(RESOLUTION) \
+	  $(END_TIME_FLAG) -o $@ 2>$(OUT)/$*/scene.log
+
+# A checkpoint left by an interrupted run is resumed, not restarted.
+$(OUT)/%/run.h5: $(OUT)/%/scene.json
+	@set -e; start=$$(date +%s); \
+	resume=$$([ -f $(OUT)/$*/run.ckpt.h5 ] && echo --resume || true); \
+	$(BIN)/hvi-run/hvi-run $< -o $@ --threads $(THREADS) -q $$resume; \
+	echo "validate: $* run in $$(( $$(date +%s) - start )) s"
+
+$(OUT)/%/verdict.json: $(OUT)/%/run.h5
+	$(BIN)/hvi-assess/hvi-assess $< -o $@ -q 2>$(OUT)/$*/assess.log
