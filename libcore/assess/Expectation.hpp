@@ -5,7 +5,7 @@
 //   - an expected block: {"pnp": "NP", "bumper_hole_diameter_mm": 6.7, "tolerances": {...}}
 //     (schemas/expected.schema.json);
 //   - one case: {"id": "UM-3.125", ..., "expected": {...}};
-//   - a collection of cases anywhere in a document, such as ../shared/validation/
+//   - a collection of cases anywhere in a document, such as data/validation/
 //     thesis_cases.json: the case is picked by --case ID, or else by the run's scene id.
 // Each metric present (and not null) in the block is compared: pnp exactly, numbers with
 // |actual - expected| <= atol + rtol * |expected| (defaults below, overridable per metric in

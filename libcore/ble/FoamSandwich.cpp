@@ -12,6 +12,12 @@ namespace {
 
 // FOAM10: "apply a 5 % reduction of the hypervelocity d_c for 10 and 20 PPI".
 constexpr double kCoarseFoamFactor = 0.95;
+// FOAM10 sec. 3: the tests' range.
+constexpr double kFoamTestedMaxAngleDeg = 60.0;
+constexpr double kFoamTestedMinVelocityKmS = 2.1;
+constexpr double kFoamTestedMaxVelocityKmS = 7.56;
+constexpr double kFoamTestedMinCoreCm = 1.27;
+constexpr double kFoamTestedMaxCoreCm = 5.08;
 
 struct FoamTerms {
     const FoamSandwichPanel& panel;
@@ -114,7 +120,28 @@ CriticalDiameterResult foamSandwichCriticalDiameter(const FoamSandwichPanel& pan
         const double dHigh = terms.high(vHigh);
         result.criticalDiameterCm = dLow + (dHigh - dLow) * (v - vLow) / (vHigh - vLow);
     }
-    result.warnings.push_back({"foam_ble_ambiguity", readingName(options)});
+    if (options.lowVelocityExponent != FoamSandwichOptions{}.lowVelocityExponent ||
+        options.coreFactor != FoamSandwichOptions{}.coreFactor) {
+        result.warnings.push_back({"foam_ble_reading_b", readingName(options) +
+                                                             " (not the source's reading: for "
+                                                             "sensitivity studies only)"});
+    }
+    const double cmCore = panel.coreThicknessCm;
+    std::string outside;
+    if (threat.angleDeg > kFoamTestedMaxAngleDeg) {
+        outside += " angle above 60 deg;";
+    }
+    if (v < kFoamTestedMinVelocityKmS || v > kFoamTestedMaxVelocityKmS) {
+        outside += " speed outside 2.1-7.56 km/s;";
+    }
+    if (cmCore < kFoamTestedMinCoreCm || cmCore > kFoamTestedMaxCoreCm) {
+        outside += " core outside 1.27-5.08 cm;";
+    }
+    if (!outside.empty()) {
+        outside.pop_back();
+        result.warnings.push_back(
+            {"foam_outside_tested_range", "outside FOAM10's tests:" + outside});
+    }
     return result;
 }
 

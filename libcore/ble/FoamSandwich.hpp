@@ -20,13 +20,22 @@
 //   between: linear interpolation in V (eq 5).
 //   10 and 20 PPI foams: hypervelocity d_c reduced by 5 % (the fit is for 40 PPI).
 //
-// Known ambiguities (the FOAM10 PDF layout is not conclusive; FOAM15 was not available to
-// check whether the constants were revised):
-//  - where the 18/19 exponent applies in the ballistic branch (a factor X^(1/19), ~4 %);
-//  - whether 0.89 multiplies t_f^0.45 or sits inside the power (a factor 0.89^-0.55, ~7 %).
-// Reading A in both is pyBLOSSUM's, and the default. Every result carries a
-// foam_ble_ambiguity warning naming the reading used. The regime bounds (2.25, 4 km/s) are
-// far below the Whipple's because the ligaments shock the fragments repeatedly.
+// Two readings of the typesetting were once open: where the 18/19 exponent applies in the
+// ballistic branch, and whether 0.89 multiplies t_f^0.45 or sits inside the power. Reading A
+// is settled: it is what FOAM10's equations show (rendered from its PDF at 300 dpi), what
+// pyBLOSSUM implements, and it reproduces the author's own reference curves (pyBLOSSUM
+// validation/sandwichPanel.xlsx, citing NASA/TM-2015-218593) within 0.19 % from 0.1 to
+// 15 km/s, where reading B misses by up to 9 %. Reading B remains selectable for sensitivity
+// studies only, with a foam_ble_reading_b warning.
+//
+// The foam density rho_f is the core's measured volumetric density: FOAM10 fitted the
+// constants with the tested panels' measured areal densities (its Table 1), which put the
+// nominal "6-8 %" cores at 0.21-0.25 g/cm^3 (7.7-9.4 % of the solid). The 10/20 PPI
+// reduction acts on the hypervelocity branch (FOAM10); this code lets it enter the shatter
+// band through the interpolation's upper end, so d_c stays continuous in V (a choice of ours).
+// Tested range (FOAM10 sec. 3): 0-60 deg, 2.1-7.56 km/s, t_f 1.27-5.08 cm; outside it a
+// foam_outside_tested_range warning says which. The regime bounds (2.25, 4 km/s) are far below
+// the Whipple's because the ligaments shock the fragments repeatedly.
 #pragma once
 
 #include "ble/Types.hpp"
@@ -67,8 +76,8 @@ double foamLowVelocityLimitKmS(double angleDeg);
 /// Shatter-to-hypervelocity bound V_HV = 4.0 / cos^(1/3) [km/s].
 double foamHighVelocityLimitKmS(double angleDeg);
 
-/// FOAM10 critical diameter [cm] with regime and warnings: always foam_ble_ambiguity (naming
-/// the reading); foam_ppi_not_tested when PPI is not 10, 20 or 40 (the 5 % reduction is then
+/// FOAM10 critical diameter [cm] with regime and warnings: foam_ble_reading_b with reading B;
+/// foam_outside_tested_range outside FOAM10's tests; foam_ppi_not_tested when PPI is not 10, 20 or 40 (the 5 % reduction is then
 /// applied below 40 PPI, the conservative side).
 CriticalDiameterResult foamSandwichCriticalDiameter(const FoamSandwichPanel& panel,
                                                     const Threat& threat,

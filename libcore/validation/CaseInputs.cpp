@@ -73,7 +73,11 @@ json bleConstraints(const Case& c) {
                   {"core_thickness_mm", c.gapMm},
                   {"relative_density_percent", c.relativeDensityPercent},
                   {"ppi", c.ppi},
-                  {"material", c.rear.material}};
+                  {"material", c.rear.material},
+                  {"core_material", c.coreMaterial}};
+        if (c.panelArealDensityGCm2) {
+            shield["panel_areal_density_g_cm2"] = *c.panelArealDensityGCm2;
+        }
         break;
     case Shield::Honeycomb:
         shield = {{"type", "honeycomb_sandwich"},

@@ -86,6 +86,9 @@ void addStudyCases(std::vector<Case>& cases) {
         c.coreMaterial = kStudyMaterial;
         c.relativeDensityPercent = f.at("relative_density_percent");
         c.ppi = f.at("ppi");
+        if (f.contains("panel_areal_density_g_cm2")) {
+            c.panelArealDensityGCm2 = f.at("panel_areal_density_g_cm2").get<double>();
+        }
         c.result = f.at("expected").at("pnp");
         c.source = doc.at("source");
         cases.push_back(c);
@@ -155,6 +158,9 @@ void addDevelopmentCases(std::vector<Case>& cases) {
         c.coreMaterial = mapMaterial(core.at("material"), c);
         c.relativeDensityPercent = core.at("relative_density_percent");
         c.ppi = core.at("ppi");
+        if (t.contains("panel_areal_density_g_cm2")) {
+            c.panelArealDensityGCm2 = t.at("panel_areal_density_g_cm2").get<double>();
+        }
         cases.push_back(c);
     }
     for (const auto& t : doc.at("honeycomb")) {

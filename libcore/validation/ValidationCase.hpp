@@ -45,6 +45,7 @@ struct Case {
     // Cores.
     std::string coreMaterial;
     double relativeDensityPercent = 0.0, ppi = 0.0;     ///< foam
+    std::optional<double> panelArealDensityGCm2;        ///< foam: measured (FOAM10 Table 1)
     double cellSizeMm = 0.0, foilThicknessMm = 0.0;     ///< honeycomb
     std::string result; ///< "P" or "NP": the test's
     std::string source; ///< the original report

@@ -112,7 +112,7 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
     int tp = 0, fp = 0, fn = 0, tn = 0, axisOnly = 0, notRun = 0, provisional = 0;
     double wall = 0.0;
     for (const auto& r : rows) {
-        const std::string shield = toString(r.c->shield);
+        const std::string shield = r.c->set + " " + toString(r.c->shield);
         const std::string band = speedBand(r.c->velocityKmS);
         byShield[shield].first.add(r.ours, r.c->result);
         byShield[shield].second.add(r.ble, r.c->result);
@@ -132,11 +132,12 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
         wall += r.wallS.value_or(0.0);
     }
     md << "## Summary\n\n"
-       << "| | cases | ours | BLE on the same cases | BLE on all |\n|---|---|---|---|---|\n";
+       << "| set, shield | cases | ours | BLE on the same cases | BLE on all |\n"
+       << "|---|---|---|---|---|\n";
     for (const auto& [shield, t] : byShield) {
         Tally bleSame;
         for (const auto& r : rows) {
-            if (toString(r.c->shield) == shield && r.ours) {
+            if (r.c->set + " " + toString(r.c->shield) == shield && r.ours) {
                 bleSame.add(r.ble, r.c->result);
             }
         }

@@ -17,7 +17,7 @@ mkdir -p "$out"
 
 echo "== 1. ble-size: ballistic-limit sizing and the Whipple-equivalent initial standoff"
 overlay=()
-tests="$root/../shared/validation/thesis_cases.json"
+tests="$root/data/validation/thesis_cases.json"
 [ -f "$tests" ] && overlay=(--overlay "$tests")
 "$bin/ble-size/ble-size" "$here/constraints.json" -o "$out/sizing.json" \
   --curve "$out/ballistic_limit.csv" --plot "$out/ballistic_limit.svg" "${overlay[@]}"

@@ -14,7 +14,7 @@ out="${1:-$root/out/erosion-calibration}"
 spacing="${2:-0.04}"
 threads="${3:-$(nproc)}"
 bin="$root/build/tools"
-tests="$root/../shared/validation/thesis_cases.json"
+tests="$root/data/validation/thesis_cases.json"
 mkdir -p "$out"
 for case in A1076 A1077; do
   for factor in 0.5 1.0 1.5; do

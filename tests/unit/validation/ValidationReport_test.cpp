@@ -39,9 +39,9 @@ TEST(ValidationReport, CountsAgreementPerShieldAndTheConfusionMatrix) {
     std::ofstream(out / "A1077" / "ble.json")
         << R"({"performance": {"verdict": "NP", "critical_over_projectile_diameter": 1.25}})";
     const std::string md = validation::validationReport(cases, out, {"quick", "0.04"});
-    EXPECT_NE(md.find("| foam | 2 | 1/2 (50 %) | 1/2 (50 %) | 1/2 (50 %) |"), std::string::npos)
+    EXPECT_NE(md.find("| source_study foam | 2 | 1/2 (50 %) | 1/2 (50 %) | 1/2 (50 %) |"), std::string::npos)
         << md;
-    EXPECT_NE(md.find("| whipple | 2 | 1/1 (100 %) | 1/1 (100 %) | 2/2 (100 %) |"),
+    EXPECT_NE(md.find("| source_study whipple | 2 | 1/1 (100 %) | 1/1 (100 %) | 2/2 (100 %) |"),
               std::string::npos)
         << md;
     EXPECT_NE(md.find("P/P 2, P/NP (missed) 0, NP/P (false alarm) 1, NP/NP 0"), std::string::npos)
