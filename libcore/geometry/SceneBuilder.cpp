@@ -104,11 +104,12 @@ RuleValue endTimeRule(const ThreatSpec& threat, const PanelFrame& frame, double 
                   "wall: L/V is the leading debris' crossing time at the impact speed, the "
                   "factor " +
                   num(kEndTimeCrossingFactor) +
-                  " lets a cloud that a core slows to a fifth of the impact speed on average "
-                  "(measured in the source study's foam panel HITF03147-2) arrive, the " +
+                  " lets a cloud that a core slows to a tenth of the impact speed on average "
+                  "arrive (the source study's foam panel HITF03147-2: a fifth on the way to "
+                  "its rear facesheet, still pushing it at the former 5 L/V + 5 us), the " +
                   num(kEndTimeMarginUs) +
-                  " us margin lets the rear wall respond; hvi-run's stop rules end the run "
-                  "earlier when nothing more happens. Here L = " +
+                  " us margin lets the rear wall respond to rest; hvi-run's stop rules end the "
+                  "run earlier when nothing more happens. Here L = " +
                   num(pathMm) + " mm, V = " + num(threat.velocityKmS) +
                   " km/s, L/V = " + num(crossingUs) + " us -> T = " + num(endTime) + " us";
     return rule;

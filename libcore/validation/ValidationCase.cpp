@@ -45,17 +45,26 @@ json parse(const char* resource) {
     return json::parse(resources::get(resource));
 }
 
+/// The parts every case of the source study shares: all of Al6061-T6 but where stated.
+Case studyCase(const json& entry, Shield shield, const json& doc) {
+    Case c;
+    c.id = entry.at("id");
+    c.set = "source_study";
+    c.shield = shield;
+    c.projectileMaterial = entry.value("projectile_material", kStudyMaterial);
+    c.projectileDensityGCm3 = entry.value("projectile_density_g_cm3", 2.70);
+    c.diameterMm = entry.at("projectile_diameter_mm");
+    c.velocityKmS = entry.at("velocity_km_s");
+    c.result = entry.at("expected").at("pnp");
+    c.source = doc.at("source");
+    c.coreMaterial = shield == Shield::Whipple ? "" : kStudyMaterial;
+    return c;
+}
+
 void addStudyCases(std::vector<Case>& cases) {
     const json doc = parse("data/validation/thesis_cases.json");
     for (const auto& w : doc.at("whipple")) {
-        Case c;
-        c.id = w.at("id");
-        c.set = "source_study";
-        c.shield = Shield::Whipple;
-        c.projectileMaterial = w.value("projectile_material", kStudyMaterial);
-        c.projectileDensityGCm3 = w.value("projectile_density_g_cm3", 2.70);
-        c.diameterMm = w.at("projectile_diameter_mm");
-        c.velocityKmS = w.at("velocity_km_s");
+        Case c = studyCase(w, Shield::Whipple, doc);
         c.front = {kStudyMaterial, w.at("bumper_mm")};
         c.rear = {kStudyMaterial, w.at("rear_wall_mm")};
         if (w.at("standoff_mm").is_null()) {
@@ -67,53 +76,31 @@ void addStudyCases(std::vector<Case>& cases) {
         } else {
             c.gapMm = w.at("standoff_mm");
         }
-        c.result = w.at("expected").at("pnp");
-        c.source = doc.at("source");
         cases.push_back(c);
     }
     for (const auto& f : doc.at("foam")) {
-        Case c;
-        c.id = f.at("id");
-        c.set = "source_study";
-        c.shield = Shield::Foam;
-        c.projectileMaterial = kStudyMaterial;
-        c.projectileDensityGCm3 = 2.70;
-        c.diameterMm = f.at("projectile_diameter_mm");
-        c.velocityKmS = f.at("velocity_km_s");
+        Case c = studyCase(f, Shield::Foam, doc);
         c.front = {kStudyMaterial, f.at("facesheet_mm")};
         c.rear = c.front;
         c.gapMm = f.at("standoff_mm");
-        c.coreMaterial = kStudyMaterial;
         c.relativeDensityPercent = f.at("relative_density_percent");
         c.ppi = f.at("ppi");
         if (f.contains("panel_areal_density_g_cm2")) {
             c.panelArealDensityGCm2 = f.at("panel_areal_density_g_cm2").get<double>();
         }
-        c.result = f.at("expected").at("pnp");
-        c.source = doc.at("source");
         cases.push_back(c);
     }
     for (const auto& h : doc.at("honeycomb")) {
-        Case c;
-        c.id = h.at("id");
-        c.set = "source_study";
-        c.shield = Shield::Honeycomb;
-        c.projectileMaterial = kStudyMaterial;
-        c.projectileDensityGCm3 = 2.70;
-        c.diameterMm = h.at("projectile_diameter_mm");
-        c.velocityKmS = h.at("velocity_km_s");
+        Case c = studyCase(h, Shield::Honeycomb, doc);
         c.front = {kStudyMaterial, h.at("facesheet_mm")};
         c.rear = c.front;
         c.gapMm = h.at("core_thickness_mm");
-        c.coreMaterial = kStudyMaterial;
         // The source gives neither (workflows/examples/honeycomb_HITF04150.json says why).
         c.cellSizeMm = h.at("cell_size_mm").is_null() ? 4.7625 : h.at("cell_size_mm").get<double>();
         c.foilThicknessMm =
             h.at("foil_thickness_mm").is_null() ? 0.0254 : h.at("foil_thickness_mm").get<double>();
         c.assumptions.push_back("cell size and foil not given in the source: 3/16 in (4.7625 mm) "
                                 "cells of 0.001 in (0.0254 mm) Al6061-T6 foil assumed");
-        c.result = h.at("expected").at("pnp");
-        c.source = doc.at("source");
         cases.push_back(c);
     }
 }

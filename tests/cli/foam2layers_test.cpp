@@ -211,14 +211,14 @@ TEST(Foam2LayersCli, SceneConventions) {
         }
     }
 
-    // Domain: 2 x (1.8 + 51.054 tan 17°) = 34.82 -> 35 mm; end time 5 x 51.323/6.76 + 5 =
-    // 42.96 -> 43 us.
+    // Domain: 2 x (1.8 + 51.054 tan 17°) = 34.82 -> 35 mm; end time 10 x 51.323/6.76 + 10 =
+    // 85.92 -> 86 us.
     const double footprint = 1.8 + 51.054 * std::tan(17.0 * std::numbers::pi / 180.0);
     EXPECT_TRUE(near("footprint (hand)", footprint, 17.4088, 1e-4, 0.0));
     EXPECT_EQ(scene["domain"]["radius_mm"].get<double>(), 35.0);
     EXPECT_NE(scene["domain"]["radius_reason"].get<std::string>().find("17 deg"),
               std::string::npos);
-    EXPECT_EQ(scene["run"]["end_time_us"].get<double>(), 43.0);
+    EXPECT_EQ(scene["run"]["end_time_us"].get<double>(), 86.0);
     EXPECT_FALSE(scene["summary"]["end_time_reason"].get<std::string>().empty());
     EXPECT_EQ(scene["run"]["stop_no_new_penetration_us"].get<double>(), 0.25);
     EXPECT_EQ(scene["run"]["stop_debris_speed_km_s"].get<double>(), 0.1);

@@ -71,14 +71,14 @@ TEST(Hcomb2RingsCli, HelpAndVersionExitZero) {
 // Real core: (8/3)(0.0254/4.7625) = 0.0142222 x 2.70 g/cm3 x 5.08 cm = 0.195072 g/cm2.
 // Reduced: 2.70 x 2 Σr w H / R² = 2.70 x 2 x 152.4 x 0.0508 x 50.8 / 1296 / 10
 // = 0.163871 g/cm2; ratio 0.840052.
-// End time: L = 0.015 + 1.27 + 50.8 + 1.27 = 53.355 mm, 5 L/V + 5 = 47.90 -> 48 us.
+// End time: L = 0.015 + 1.27 + 50.8 + 1.27 = 53.355 mm, 10 L/V + 10 = 95.78 -> 96 us.
 TEST(Hcomb2RingsCli, Hitf04150Golden) {
     ToolRun run;
     const json scene = sceneOf({fixture("honeycomb_HITF04150.json")}, "hitf04150", &run);
     ASSERT_FALSE(scene.empty());
     EXPECT_TRUE(validScene(scene));
     EXPECT_EQ(scene["domain"]["radius_mm"].get<double>(), 36.0);
-    EXPECT_EQ(scene["run"]["end_time_us"].get<double>(), 48.0);
+    EXPECT_EQ(scene["run"]["end_time_us"].get<double>(), 96.0);
 
     const auto rings = bodiesWithRole(scene, "core_ring");
     ASSERT_EQ(rings.size(), 8u);

@@ -58,12 +58,12 @@ TEST(SceneBuilder, DomainRadiusFloorForThinCores) {
     EXPECT_EQ(rule.value, 15.0);
 }
 
-// L = 0.015 + 0.254 + 50.8 + 0.254 = 51.323 mm; 5 x 51.323 / 6.76 + 5 = 42.96 -> 43 us.
+// L = 0.015 + 0.254 + 50.8 + 0.254 = 51.323 mm; 10 x 51.323 / 6.76 + 10 = 85.92 -> 86 us.
 TEST(SceneBuilder, EndTimeRuleHitf04151) {
     const auto rule = endTimeRule(hitf04151Threat(), hitf04151Frame(), 0.015);
-    EXPECT_EQ(rule.value, std::ceil(5.0 * 51.323 / 6.76 + 5.0));
-    EXPECT_EQ(rule.value, 43.0);
-    EXPECT_NE(rule.reason.find("T = 43 us"), std::string::npos) << rule.reason;
+    EXPECT_EQ(rule.value, std::ceil(10.0 * 51.323 / 6.76 + 10.0));
+    EXPECT_EQ(rule.value, 86.0);
+    EXPECT_NE(rule.reason.find("T = 86 us"), std::string::npos) << rule.reason;
 }
 
 TEST(SceneBuilder, GivenValuesOverrideTheRules) {
