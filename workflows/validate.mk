@@ -6,8 +6,11 @@ RESOLUTION ?= 0.04
 THREADS ?= 1
 END_TIME_US ?=
 # One directory per spacing, shared by the sets: a case run for one set counts for all.
-OUT ?= $(ROOT)/out/validate/$(RESOLUTION)
+# Relative OUT and REPORT are taken from the repository root (make -C changes directory).
+OUT ?= out/validate/$(RESOLUTION)
 REPORT ?= $(OUT)/validation.md
+override OUT := $(if $(filter /%,$(OUT)),$(OUT),$(ROOT)/$(OUT))
+override REPORT := $(if $(filter /%,$(REPORT)),$(REPORT),$(ROOT)/$(REPORT))
 
 HVI_VALIDATE := $(BIN)/hvi-validate/hvi-validate
 CASES := $(shell $(HVI_VALIDATE) list --set $(SET))
@@ -42,11 +45,17 @@ $(OUT)/%/scene.json: $(OUT)/%/panel.json
 	w=$$(cat $(OUT)/$*/writer); $(BIN)/$$w/$$w $< --particle-spacing-mm $(RESOLUTION) \
 	  $(END_TIME_FLAG) -o $@ 2>$(OUT)/$*/scene.log
 
-# A checkpoint left by an interrupted run is resumed, not restarted.
+# The run writes run.part.h5, renamed to run.h5 once complete: an interrupted run leaves
+# run.part.h5 and its checkpoint (make deletes only the target), and the next make resumes
+# it with the history it already has, rather than restarting.
 $(OUT)/%/run.h5: $(OUT)/%/scene.json
-	@set -e; start=$$(date +%s); \
-	resume=$$([ -f $(OUT)/$*/run.ckpt.h5 ] && echo --resume || true); \
-	$(BIN)/hvi-run/hvi-run $< -o $@ --threads $(THREADS) -q $$resume; \
+	@set -e; start=$$(date +%s); part=$(OUT)/$*/run.part.h5; \
+	resume=$$([ -f $(OUT)/$*/run.part.ckpt.h5 ] && [ -f $$part ] && echo --resume || true); \
+	$(BIN)/hvi-run/hvi-run $< -o $$part --threads $(THREADS) -q $$resume; \
+	mv -f $$part $@; \
+	if [ -f $(OUT)/$*/run.part.xmf ]; then \
+	  sed 's/run\.part\.h5/run.h5/g' $(OUT)/$*/run.part.xmf > $(OUT)/$*/run.xmf; \
+	  rm -f $(OUT)/$*/run.part.xmf; fi; \
 	echo "validate: $* run in $$(( $$(date +%s) - start )) s"
 
 $(OUT)/%/verdict.json: $(OUT)/%/run.h5

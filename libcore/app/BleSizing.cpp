@@ -486,6 +486,9 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
                            {"relative_density_percent", relDensity},
                            {"ppi", ppi},
                            {"material", shield.at("material")}};
+        if (shield.contains("core_material")) {
+            sizing["panel"]["core_material"] = shield.at("core_material");
+        }
     }
 
     sizing["threat"] = {{"diameter_mm", threatIn.at("diameter_mm")},

@@ -56,10 +56,11 @@ void HviValidateTool::execute() {
         }
         const fs::path dir(m_outDir);
         fs::create_directories(dir);
-        io::writeTextAtomically(dir / "panel.json", validation::panelInput(*c).dump(2) + "\n");
+        // panel.json last: it is the workflow's target, so it exists only with the others.
         io::writeTextAtomically(dir / "constraints.json",
                                 validation::bleConstraints(*c).dump(2) + "\n");
         io::writeTextAtomically(dir / "writer", validation::sceneWriterOf(*c) + "\n");
+        io::writeTextAtomically(dir / "panel.json", validation::panelInput(*c).dump(2) + "\n");
         info(c->id + ": " + validation::toString(c->shield) + ", test " + c->result + " -> " +
              dir.string());
         return;

@@ -116,6 +116,9 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
     if (a.criteria.failedDensityRatio < 0.0) {
         a.criteria.failedDensityRatio = a.layout.minDensityRatio;
     }
+    if (a.criteria.restSpeedKmS < 0.0) {
+        a.criteria.restSpeedKmS = a.layout.stopDebrisSpeedKmS;
+    }
     if (!a.layout.rearWall) {
         a.warnings.push_back("the scene has no body with role \"rear_wall\": no P/NP verdict");
     }
@@ -267,7 +270,8 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
         !*a.rearWallPerforated) {
         a.warnings.push_back("the solver stopped on its rear-wall perforation rule (any "
                              "material behind the rear face) but the assessment finds no "
-                             "perforation (docs/metrics.md); the verdict is NP");
+                             "perforation (docs/metrics.md); the verdict follows the damage "
+                             "grade");
     }
     if (a.axisConfined) {
         a.warnings.push_back(

@@ -49,9 +49,10 @@ struct Criteria {
     /// this many spacings off its initial face: one spacing is the smallest displacement the
     /// discretisation resolves.
     double bulgeSpacings = 1.0;
-    /// Material slower than this is at rest [km/s]: the source study's stop speed for the
-    /// leading debris (section 5.4), the scene schema's stop_debris_speed_km_s default.
-    double restSpeedKmS = 0.1;
+    /// Material slower than this is at rest [km/s]. A negative value means "the scene's
+    /// run.stop_debris_speed_km_s" (the source study's 0.1 km/s by default, section 5.4), the
+    /// speed the solver's stop rules use too.
+    double restSpeedKmS = -1.0;
     /// The leading edge of the debris cloud has this fraction of the debris mass ahead of it
     /// (ignores a few stray particles ahead of the cloud).
     double leadingEdgeMassFraction = 1.0e-3;

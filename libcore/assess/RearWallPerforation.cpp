@@ -12,36 +12,77 @@ namespace hvi::assess {
 
 namespace {
 
+/// The wall's radial bins (one spacing wide, or a little more or less) and, per bin, its
+/// current rear surface.
+struct WallBins {
+    double rMin = 0.0, width = 0.0;
+    long count = 0;
+    std::vector<double> surface;
+
+    long binOf(double r) const { return static_cast<long>(std::floor((r - rMin) / width)); }
+};
+
+/// The median of `values` (0 when empty).
+double median(std::vector<double> values) {
+    if (values.empty()) {
+        return 0.0;
+    }
+    const auto mid = values.begin() + static_cast<long>(values.size() / 2);
+    std::nth_element(values.begin(), mid, values.end());
+    return *mid;
+}
+
 /// Bulge, dent, failed material by half of the wall, and the wall's speed: the grades short
-/// of perforation and whether the wall is at rest (file comment of the header).
+/// of perforation and whether the wall is at rest (file comment of the header). The wall is
+/// its own dense material, wherever it has moved, short of what has left it: more than two
+/// spacings behind its rear surface (spall) or more than its axial window in front of its
+/// initial front face (ejecta). Displacements are taken relative to the median of the
+/// outer quarter of the same row, so that the whole wall drifting with the momentum it took
+/// (no edge supports it) is no bulge.
 void gradeWallMaterial(const MaterialItems& items, const ShieldLayout& layout, std::size_t wall,
-                       const Criteria& criteria, RearWallPerforation& result) {
+                       const Criteria& criteria, const WallBins& bins,
+                       RearWallPerforation& result) {
     const BodyLayout& body = layout.bodies[wall];
     const double s = body.spacing;
     const double mid = 0.5 * (body.zFront + body.zRear);
+    const double outer = body.rMin + 0.75 * (body.rMax - body.rMin);
+    const double lowest = body.zFront - axialWindow(body, criteria);
+    std::vector<double> rearMoved, frontMoved, rearOuter, frontOuter;
+    std::vector<double> rearR0, frontR0;
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (!isBodyMaterial(items, i, layout, wall)) {
             continue;
         }
         const bool failed = isFailed(items, i, layout, criteria);
-        const bool inPlace = isInPlace(items, i, layout, criteria);
         if (failed && items.z0[i] < mid) {
             result.failedFrontHalf = true; // eroded or failed at the struck side: a crater
         }
-        if (!inPlace) {
-            continue;
+        const long k = bins.binOf(items.r[i]);
+        if (!items.alive[i] || k < 0 || k >= bins.count ||
+            items.density[i] < criteria.intactDensityRatio * body.referenceDensity ||
+            items.z[i] > bins.surface[static_cast<std::size_t>(k)] + 2.0 * s ||
+            items.z[i] < lowest) {
+            continue; // not the wall any more
         }
-        if (failed && items.z0[i] >= mid) {
-            result.failedRearHalf = true;
+        if (failed) {
+            result.failedRearHalf = result.failedRearHalf || items.z0[i] >= mid;
+            continue;
         }
         result.wallMaxSpeedKmS = std::max(result.wallMaxSpeedKmS, std::fabs(items.vz[i]));
         const double moved = items.z[i] - items.z0[i];
         if (items.z0[i] >= body.zRear - s) {
-            result.bulgeMm = std::max(result.bulgeMm, moved);
+            (items.r0[i] >= outer ? rearOuter : rearMoved).push_back(moved);
         }
         if (items.z0[i] <= body.zFront + s) {
-            result.dentMm = std::max(result.dentMm, moved);
+            (items.r0[i] >= outer ? frontOuter : frontMoved).push_back(moved);
         }
+    }
+    const double rearDrift = median(rearOuter), frontDrift = median(frontOuter);
+    for (double m : rearMoved) {
+        result.bulgeMm = std::max(result.bulgeMm, m - rearDrift);
+    }
+    for (double m : frontMoved) {
+        result.dentMm = std::max(result.dentMm, m - frontDrift);
     }
 }
 
@@ -82,12 +123,13 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
     const double s = body.spacing;
     const double link = criteria.linkSpacings * s;
     const double extent = body.rMax - body.rMin;
-    const long count = std::max(1L, std::lround(extent / s));
-    const double w = extent / static_cast<double>(count);
+    WallBins bins;
+    bins.rMin = body.rMin;
+    bins.count = std::max(1L, std::lround(extent / s));
+    bins.width = extent / static_cast<double>(bins.count);
+    const long count = bins.count;
     const auto n = static_cast<std::size_t>(count);
-    auto binOf = [&](double r) -> long {
-        return static_cast<long>(std::floor((r - body.rMin) / w));
-    };
+    auto binOf = [&](double r) { return bins.binOf(r); };
     std::vector<std::vector<double>> wallZ(n);
     std::vector<double> topSound(n, -std::numeric_limits<double>::infinity());
     for (std::size_t i = 0; i < items.size(); ++i) {
@@ -127,6 +169,7 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
         }
         surface[k] = zs[j];
     }
+    bins.surface = surface;
 
     // (b) Material beyond the surface, moving outward; detached spall; what still approaches.
     double crossingRadius = 0.0;
@@ -153,7 +196,9 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
             if (beyond > 2.0 * s) { // only detached material is beyond the surface
                 ++result.spallItems;
                 result.spallMassMg += items.mass[i];
-                result.spallRadiusMm = std::max(result.spallRadiusMm, items.r[i] + 0.5 * s);
+                // Where it came from (the material frame, as the open columns): spall thrown
+                // off the axis columns stays an axis-band failure however far it spreads.
+                result.spallRadiusMm = std::max(result.spallRadiusMm, items.r0[i] + 0.5 * s);
             }
             continue;
         }
@@ -168,7 +213,7 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
     result.detachedSpall = result.spallItems >= minItems;
     result.spallAxisConfined =
         result.detachedSpall && result.spallRadiusMm <= axisBandMm(layout, wall, criteria);
-    gradeWallMaterial(items, layout, wall, criteria, result);
+    gradeWallMaterial(items, layout, wall, criteria, bins, result);
     result.perforated = result.throughThicknessFailure || result.materialCrossed;
 
     // Open columns, in the material frame: every item of the wall's material in the bin failed.
@@ -189,7 +234,7 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
     for (std::size_t k = 0; k < n; ++k) {
         if (itemsIn[k] > 0 && failedIn[k] == itemsIn[k]) {
             ++result.openColumns;
-            result.openRadiusMm = body.rMin + static_cast<double>(k + 1) * w;
+            result.openRadiusMm = body.rMin + static_cast<double>(k + 1) * bins.width;
         }
     }
     if (result.perforated) {

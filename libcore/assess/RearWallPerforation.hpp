@@ -19,16 +19,21 @@
 //    the wall's back face. The particles of eroded wall elements count (an eroded element
 //    behind the back face, flying away, is wall material ejected from it); material of the
 //    wall thrown back off its front face does not (it is in front of the surface, vz < 0);
-//  * bulge: the wall's own material in place has moved outward, behind its initial rear face,
-//    by at least one spacing (bulgeMm is the largest such displacement of an item of the
-//    wall's rear row);
-//  * attached spall: failed wall material in place in the rear half of the wall (a cavity or
-//    crack under the back face) without a path through the thickness;
-//  * crater: failed or eroded wall material in its front half, or its front face dented by
-//    at least one spacing.
+//  * bulge: the wall's rear row has moved outward by at least one spacing more than the
+//    outer quarter of that row (the whole wall drifting with the momentum it took, free at
+//    its edge, is no bulge); bulgeMm is the largest such displacement. The wall here is its
+//    own dense, unfailed material wherever it has moved, short of spall (more than two
+//    spacings behind the rear surface) and of ejecta (more than its axial window in front of
+//    its initial front face);
+//  * attached spall: failed wall material of the rear half still part of the wall (a cavity
+//    or crack under the back face) without a path through the thickness;
+//  * crater: failed or eroded wall material in its front half, or its front row dented by at
+//    least one spacing (relative to that row's outer quarter, as the bulge).
 // The state at the run's end (is it at rest?): the fastest axial speed of the wall's
-// material in place, and the items of other bodies in front of the wall's rear surface that
-// still move toward it faster than Criteria::restSpeedKmS.
+// unfailed material (as above), and the items of other bodies in front of the wall's rear
+// surface that still move toward it faster than Criteria::restSpeedKmS.
+// spallRadiusMm is where the spall came from (initial radius, the material frame).
+// Units: mm, km/s, mg.
 // Informational only (not part of the verdict):
 //  * the open columns: radial bins (one spacing wide, by reference radius) in which every
 //    wall item across the thickness has failed, a hole through the wall in the material frame;
@@ -58,12 +63,12 @@ struct RearWallPerforation {
     bool detachedSpall = false;           ///< at least minCrossingItems spall items
     std::size_t spallItems = 0;           ///< wall items detached behind its surface
     double spallMassMg = 0.0;
-    double spallRadiusMm = 0.0;           ///< outermost spall item's r + half a spacing
-    double bulgeMm = 0.0;                 ///< largest outward displacement of the rear row
-    double dentMm = 0.0;                  ///< largest inward-pointing (+z) move of the front row
+    double spallRadiusMm = 0.0;           ///< outermost spall item's initial r + half a spacing
+    double bulgeMm = 0.0;                 ///< largest outward move of the rear row (drift removed)
+    double dentMm = 0.0;                  ///< largest +z move of the front row (drift removed)
     bool failedFrontHalf = false;         ///< failed or eroded wall material in its front half
     bool failedRearHalf = false;          ///< failed wall material in place in its rear half
-    double wallMaxSpeedKmS = 0.0;         ///< fastest |vz| of the wall's material in place
+    double wallMaxSpeedKmS = 0.0;         ///< fastest |vz| of the wall's unfailed material
     std::size_t approachingItems = 0;     ///< other items in front of it moving toward it
     double approachingMaxSpeedKmS = 0.0;  ///< their fastest vz
     std::size_t openColumns = 0;      ///< columns failed through the whole thickness

@@ -36,6 +36,7 @@ ShieldLayout shieldLayout(const scene::Scene& scene, const io::Snapshot& first) 
         layout.elementSize = scene.fe.elementSize;
     }
     layout.endTimeUs = scene.run.endTime;
+    layout.stopDebrisSpeedKmS = scene.run.stopDebrisSpeed;
     layout.domainRadius = scene.domain.radius;
 
     // Reference densities: mass-weighted mean of each body's items in the first snapshot.

@@ -734,9 +734,11 @@ void Simulation::updateRearWallActivity(double speed) {
     if (!std::isfinite(zRear) || speed <= 0.0) {
         return;
     }
-    // The wall itself: its meshed nodes, or its particles still within a wall thickness of
-    // where it was (spall that has flown further is no longer the wall). Other bodies: what
-    // is in front of its rear face, within its radial extent, moving toward it.
+    // The wall itself: its meshed nodes moving either way, or its particles moving outward
+    // no further than a wall thickness behind its rear face (a bulge or spall leaving; spall
+    // that has flown further, and ejecta thrown back off its front, which move away from
+    // the wall for good, are no longer the wall). Other bodies: what is in front of its rear
+    // face, within its radial extent, moving toward it.
     auto approaching = [&](std::int32_t body, double z, double r, double vz) {
         return !isWall[static_cast<std::size_t>(body)] && vz > speed && z < zRear && r >= rLo &&
                r <= rHi;
@@ -747,7 +749,7 @@ void Simulation::updateRearWallActivity(double speed) {
             continue;
         }
         const auto b = static_cast<std::size_t>(ps.body[i]);
-        const bool wallMoving = isWall[b] && std::fabs(ps.vz[i]) > speed &&
+        const bool wallMoving = isWall[b] && ps.vz[i] > speed &&
                                 ps.z[i] < zRear + m_scene.bodies[b].shape.boundZMax() -
                                               m_scene.bodies[b].shape.boundZMin();
         m_rearWallActive = wallMoving || approaching(ps.body[i], ps.z[i], ps.r[i], ps.vz[i]);

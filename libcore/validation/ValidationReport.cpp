@@ -1,5 +1,6 @@
 #include "validation/ValidationReport.hpp"
 
+#include "core/Error.hpp"
 #include "io/JsonInput.hpp"
 
 #include <cstdio>
@@ -41,9 +42,16 @@ Row readRow(const Case& c, const fs::path& dir) {
     Row row;
     row.c = &c;
     if (const auto v = readIfPresent(dir / "verdict.json")) {
+        if (!v->contains("damage_grade")) {
+            throw InputError((dir / "verdict.json").string(), "/damage_grade",
+                             "is missing: the verdict predates the damage grades",
+                             "a verdict of this hvi-assess (delete it and rerun make validate)");
+        }
         if ((*v)["verdict"].is_string()) {
             row.ours = (*v)["verdict"].get<std::string>();
-            row.grade = (*v)["damage_grade"].get<std::string>();
+            row.grade = (*v)["damage_grade"].is_string()
+                            ? (*v)["damage_grade"].get<std::string>()
+                            : std::string();
             row.final = (*v)["verdict_final"] == true;
             row.axisOnly = (*v)["axis_band_only"] == true;
         }
@@ -108,12 +116,14 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
 
     // Summary first.
     std::map<std::string, std::pair<Tally, Tally>> byShield, bySpeed;
+    std::map<std::string, int> casesOf;
     Tally oursAll, bleAll, bleOnRun;
     int tp = 0, fp = 0, fn = 0, tn = 0, axisOnly = 0, notRun = 0, provisional = 0;
     double wall = 0.0;
     for (const auto& r : rows) {
         const std::string shield = r.c->set + " " + toString(r.c->shield);
         const std::string band = speedBand(r.c->velocityKmS);
+        ++casesOf[shield];
         byShield[shield].first.add(r.ours, r.c->result);
         byShield[shield].second.add(r.ble, r.c->result);
         bySpeed[band].first.add(r.ours, r.c->result);
@@ -141,7 +151,7 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
                 bleSame.add(r.ble, r.c->result);
             }
         }
-        md << "| " << shield << " | " << t.second.total << " | " << t.first.text() << " | "
+        md << "| " << shield << " | " << casesOf[shield] << " | " << t.first.text() << " | "
            << bleSame.text() << " | " << t.second.text() << " |\n";
     }
     md << "| all | " << rows.size() << " | " << oursAll.text() << " | " << bleOnRun.text()

@@ -186,3 +186,43 @@ TEST(DamageGrade, AMovingWallMakesAnNpProvisional) {
     EXPECT_EQ(g.verdict, "NP");
     EXPECT_FALSE(g.final);
 }
+
+TEST(DamageGrade, AWallDriftingAsAWholeIsNoBulge) {
+    // No edge holds the wall: the momentum it took moves all of it 0.3 mm back, unbent.
+    SyntheticRun run(test::whippleScene());
+    auto& snap = run.addSnapshot(1.0);
+    run.forBody(snap, "projectile", [&](std::size_t i) { snap.vz[i] = 0.0; });
+    moveWall(run, snap, 0.3, 0.0, 0.0, [](double, double) { return true; });
+    EXPECT_EQ(grade(run, "grade_drift").grade, "none");
+}
+
+TEST(DamageGrade, ABulgeFarBeyondTheWallsThicknessIsStillTheWall) {
+    // The centre bulged 3 mm (three wall thicknesses) and still moves at 0.5 km/s: a bulge,
+    // and not at rest, so an NP is provisional.
+    SyntheticRun run(test::whippleScene());
+    auto& snap = run.addSnapshot(1.0);
+    run.forBody(snap, "projectile", [&](std::size_t i) { snap.vz[i] = 0.0; });
+    moveWall(run, snap, 3.0, 0.5, 0.0, [](double, double r0) { return r0 < 1.0; });
+    const auto a = test::assessSynthetic(run, "grade_far_bulge");
+    const auto v = assess::verdictJson(a);
+    EXPECT_EQ(v["damage_grade"], "bulge_or_attached_spall");
+    EXPECT_NEAR(v["rear_wall"]["bulge_mm"].get<double>(), 3.0, 1e-9);
+    EXPECT_EQ(v["verdict_final"], false);
+    EXPECT_NEAR(v["rear_wall"]["end_wall_speed_km_s"].get<double>(), 0.5, 1e-12);
+}
+
+TEST(DamageGrade, SpallFromTheAxisStaysAnAxisBandFailureAsItSpreads) {
+    // Spall of the first two columns that has spread out to r = 1 mm as it flew.
+    SyntheticRun run(test::whippleScene());
+    auto& snap = run.addSnapshot(1.0);
+    moveWall(run, snap, 1.0, 0.5, 1.0,
+             [](double z0, double r0) { return r0 < 0.1 && z0 > kWallRear - 0.15; });
+    run.forBody(snap, "rear", [&](std::size_t i) {
+        if (run.initial.r[i] < 0.1 && run.initial.z[i] > kWallRear - 0.15) {
+            snap.r[i] = 10.0 * run.initial.r[i];
+        }
+    });
+    const auto g = grade(run, "grade_spread_axis_spall");
+    EXPECT_EQ(g.grade, "detached_spall");
+    EXPECT_TRUE(g.axisBandOnly);
+}

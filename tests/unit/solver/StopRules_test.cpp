@@ -102,3 +102,33 @@ TEST(StopRules, NoNewPenetrationWaitsWhileTheRearWallStillMoves) {
     EXPECT_GT(run.fastestAt05, 0.1); // the old stop time: the wall was still being struck
     EXPECT_NE(run.reason, "no_new_penetration");
 }
+
+TEST(StopRules, NoNewPenetrationStillFiresWhenNothingMovesTowardTheRearWall) {
+    // Away from the rear wall (r 1.4-2.0 mm, beyond its 1 mm radius) a slab strikes a thick
+    // layer at 0.3 km/s and rings on it (slabOnWall's pair, moved aside), so the moving
+    // material stops advancing; in front
+    // of the wall nothing moves but wall material thrown back off it at 1 km/s (ejecta,
+    // moving away from it for good). Nothing moves toward or in the wall: the rule fires.
+    json marker = test::plateBody("marker", "projectile", 0.3, 0.12, 0.5);
+    json pusher = test::plateBody("pusher", "projectile", 0.3, 0.4, 2.0, 1.4);
+    pusher["velocity"] = {{"z_km_s", 0.3}};
+    // Wall material thrown back off its front face: a rear_wall body flying upstream.
+    json ejecta = test::plateBody("ejecta", "rear_wall", 1.8, 0.08, 0.5);
+    ejecta["velocity"] = {{"z_km_s", -1.0}};
+    const json doc = {{"sph", {{"particle_spacing_mm", 0.04}}},
+                      {"run",
+                       {{"end_time_us", 3.0},
+                        {"stop_debris_speed_km_s", 0.1},
+                        {"stop_no_new_penetration_us", 0.25},
+                        {"stop_on_rear_wall_perforation", false}}}, // the ejecta body is "passed"
+                      {"domain", {{"radius_mm", 2.2}}},
+                      {"bodies",
+                       {marker, pusher, test::plateBody("bumper", "bumper", 0.0, 0.2, 1.0),
+                        test::plateBody("layer", "core_layer", 0.74, 0.8, 2.0, 1.4),
+                        ejecta, test::plateBody("wall", "rear_wall", 2.0, 0.2, 1.0)}}};
+    const auto scene = test::makeScene(doc);
+    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    test::runUntil(sim, 3.0);
+    EXPECT_EQ(sim.stopReason().value_or("none"), "no_new_penetration")
+        << "at " << sim.time() << ", last progress " << sim.lastProgressTime();
+}
