@@ -142,7 +142,8 @@ namespace {
 /// (relative density x the ligament alloy's density) with a warning: nominal densities of the
 /// tested "6-8 %" cores are 10-35 % below their measured 0.21-0.25 g/cm3 (FOAM10 Table 1).
 double foamDensityGCm3(const json& shield, double facesheetDensity, double facesheetsCm,
-                       double coreMm, Problems& problems, std::vector<ble::ValidityWarning>& warnings) {
+                       double coreMm, Problems& problems,
+                       std::vector<ble::ValidityWarning>& warnings) {
     if (shield.contains("foam_density_g_cm3")) {
         return shield.at("foam_density_g_cm3").get<double>();
     }
@@ -238,12 +239,12 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
                 addWarnings(warnings, d.warnings);
                 w.bumperCm = d.bumperCm;
                 w.rearWallCm = d.rearWallCm;
-                sizing["design"] = {{"equation", "HB09 4-21, 4-22 (Whipple design)"},
-                                    {"bumper_mm", u::cmToMm(d.bumperCm)},
-                                    {"rear_wall_mm", u::cmToMm(d.rearWallCm)},
-                                    {"bumper_coefficient", d.bumperCoefficient},
-                                    {"yield_ratio_convention",
-                                     thesisCompat ? "thesis_inverted" : "handbook"}};
+                sizing["design"] = {
+                    {"equation", "HB09 4-21, 4-22 (Whipple design)"},
+                    {"bumper_mm", u::cmToMm(d.bumperCm)},
+                    {"rear_wall_mm", u::cmToMm(d.rearWallCm)},
+                    {"bumper_coefficient", d.bumperCoefficient},
+                    {"yield_ratio_convention", thesisCompat ? "thesis_inverted" : "handbook"}};
             } else {
                 w.bumperCm = u::mmToCm(requireMm(shield, "bumper_mm", mode, problems));
                 w.rearWallCm = u::mmToCm(requireMm(shield, "rear_wall_mm", mode, problems));
@@ -256,9 +257,8 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
             };
             const auto r = curveOf(threat.velocityKmS);
             addWarnings(warnings, r.warnings);
-            sizing["performance"] =
-                performanceJson("NASA JSC new non-optimum Whipple (C93 eqs 9-12)", r,
-                                threat.diameterCm);
+            sizing["performance"] = performanceJson(
+                "NASA JSC new non-optimum Whipple (C93 eqs 9-12)", r, threat.diameterCm);
             out.curveLabel = "Whipple NNO";
         } else {
             ble::StuffedWhippleShield sw;
@@ -424,8 +424,8 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
             {"iterations", initial.iterations},
             {"message", initial.message}};
         const bool solved = initial.status == ble::InitialStandoffStatus::Solved;
-        const double coreMm = hasCore ? shield.at("core_thickness_mm").get<double>()
-                                      : u::cmToMm(initial.standoffCm);
+        const double coreMm =
+            hasCore ? shield.at("core_thickness_mm").get<double>() : u::cmToMm(initial.standoffCm);
         spec.coreThicknessCm = u::mmToCm(coreMm);
         const auto splits = ble::thesisMassSplits(spec, threat, thesisOptions);
         workflow["splits_at_core_thickness_mm"] = coreMm;
@@ -462,8 +462,8 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
         panel.rearFacesheetDensityGCm3 = rho;
         panel.rearFacesheetYieldKsi = yield;
         panel.coreThicknessCm = u::mmToCm(coreMm);
-        panel.foamDensityGCm3 = foamDensityGCm3(shield, rho, frontCm + rearCm, coreMm, problems,
-                                                warnings);
+        panel.foamDensityGCm3 =
+            foamDensityGCm3(shield, rho, frontCm + rearCm, coreMm, problems, warnings);
         panel.poresPerInch = ppi;
         curveOf = [=](double v) {
             ble::Threat t = threat;
@@ -472,9 +472,8 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
         };
         const auto r = curveOf(threat.velocityKmS);
         addWarnings(warnings, r.warnings);
-        sizing["performance"] =
-            performanceJson("Ryan et al. 2010 open-cell foam sandwich (FOAM10 eqs 1-5)", r,
-                            threat.diameterCm);
+        sizing["performance"] = performanceJson(
+            "Ryan et al. 2010 open-cell foam sandwich (FOAM10 eqs 1-5)", r, threat.diameterCm);
         out.curveLabel = "foam sandwich (Ryan 2010)";
 
         // What foam2layers needs next.
@@ -491,13 +490,13 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
         }
     }
 
-    sizing["threat"] = {{"diameter_mm", threatIn.at("diameter_mm")},
-                        {"velocity_km_s", threat.velocityKmS},
-                        {"angle_deg", threat.angleDeg},
-                        {"normal_velocity_km_s",
-                         threat.velocityKmS * std::cos(u::degToRad(threat.angleDeg))},
-                        {"material", threatIn.at("material")},
-                        {"density_g_cm3", threat.densityGCm3}};
+    sizing["threat"] = {
+        {"diameter_mm", threatIn.at("diameter_mm")},
+        {"velocity_km_s", threat.velocityKmS},
+        {"angle_deg", threat.angleDeg},
+        {"normal_velocity_km_s", threat.velocityKmS * std::cos(u::degToRad(threat.angleDeg))},
+        {"material", threatIn.at("material")},
+        {"density_g_cm3", threat.densityGCm3}};
     sizing["shield"] = shield;
 
     if (curveOf) {

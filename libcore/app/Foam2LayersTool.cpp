@@ -113,9 +113,9 @@ SceneResult buildWhippleScene(const PanelInput& input, const json& provenance) {
         " sphere at " + formatNumber(threat.velocityKmS) + " km/s";
     result.scene = builder.sceneJson(input.id(), description, summary, provenance);
     result.feRectangles = builder.feRectangles();
-    result.report = {input.id() + ": Whipple shield, no core: " +
-                     formatNumber(frame.frontFacesheetMm) + " mm bumper, " +
-                     formatNumber(frame.coreThicknessMm) + " mm gap, " +
+    result.report = {input.id() +
+                     ": Whipple shield, no core: " + formatNumber(frame.frontFacesheetMm) +
+                     " mm bumper, " + formatNumber(frame.coreThicknessMm) + " mm gap, " +
                      formatNumber(frame.rearFacesheetMm) + " mm rear wall"};
     for (const auto& line : sharedReport(builder)) {
         result.report.push_back(line);

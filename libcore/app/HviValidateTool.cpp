@@ -35,7 +35,8 @@ void HviValidateTool::execute() {
     try {
         cases = validation::selectCases(m_set);
     } catch (const std::invalid_argument& e) {
-        throw InputError("<flags>", "/set", e.what(), "all, source_study, development, quick or ci");
+        throw InputError("<flags>", "/set", e.what(),
+                         "all, source_study, development, quick or ci");
     }
     if (m_action == "list") {
         for (const auto& c : cases) {

@@ -1,8 +1,7 @@
 #include "app/PanelInput.hpp"
 
-#include "ble/BleMaterials.hpp"
-
 #include "app/MaterialTable.hpp"
+#include "ble/BleMaterials.hpp"
 #include "geometry/InputChecks.hpp"
 #include "io/JsonInput.hpp"
 

@@ -66,6 +66,158 @@ std::string stringFact(const nlohmann::json& facts, const char* key, const std::
     return it != facts.end() && it->is_string() ? it->get<std::string>() : fallback;
 }
 
+/// Whether every sign of failure so far lies in the axis band.
+struct AxisBand {
+    bool perforation = true; ///< every perforated snapshot
+    bool spall = true;       ///< every detached spall
+};
+
+/// The rear wall's metrics of one snapshot into the run's: worst grade, first failure, the
+/// perforation's extent (docs/metrics.md, "Over time").
+void combineRearWall(Assessment& a, SnapshotMetrics& m, AxisBand& band) {
+    if (!m.rearWall) {
+        return;
+    }
+    const BodyLayout& wall = a.layout.bodies[*a.layout.rearWall];
+    m.grade = damageGrade(*m.rearWall, wall.spacing, a.criteria);
+    if (!a.grade || m.grade > *a.grade) {
+        a.grade = m.grade;
+    }
+    if (isFailure(m.grade) && !a.failureTimeUs) {
+        a.failureTimeUs = m.timeUs;
+    }
+    if (m.rearWall->detachedSpall) {
+        a.spallRadiusMm = std::max(a.spallRadiusMm, m.rearWall->spallRadiusMm);
+        a.spallMassMg = std::max(a.spallMassMg, m.rearWall->spallMassMg);
+        band.spall &= m.rearWall->spallAxisConfined;
+    }
+    a.bulgeMm = std::max(a.bulgeMm, m.rearWall->bulgeMm);
+    if (!a.rearWallPerforated) {
+        a.rearWallPerforated = false;
+    }
+    if (m.rearWall->perforated && !*a.rearWallPerforated) {
+        a.rearWallPerforated = true;
+        a.perforationTimeUs = m.timeUs;
+    }
+    a.throughThicknessFailure |= m.rearWall->throughThicknessFailure;
+    a.materialCrossed |= m.rearWall->materialCrossed;
+    a.detachedSpall |= m.rearWall->detachedSpall;
+    a.openColumns = std::max(a.openColumns, m.rearWall->openColumns);
+    a.openRadiusMm = std::max(a.openRadiusMm, m.rearWall->openRadiusMm);
+    if (m.rearWall->perforated) {
+        a.perforationRadiusMm = std::max(a.perforationRadiusMm, m.rearWall->perforationRadiusMm);
+        band.perforation &= m.rearWall->axisConfined;
+    }
+}
+
+void combinePenetration(Assessment& a, const SnapshotMetrics& m) {
+    if (m.penetration) {
+        if (!a.penetrationDepthMm || m.penetration->depthMm > *a.penetrationDepthMm) {
+            a.penetrationDepthMm = m.penetration->depthMm;
+            a.deepestBody = m.penetration->deepestBody;
+        }
+        for (auto b : m.penetration->reachedBodies) {
+            if (std::find(a.reachedBodies.begin(), a.reachedBodies.end(), b) ==
+                a.reachedBodies.end()) {
+                a.reachedBodies.push_back(b);
+            }
+        }
+        for (auto b : m.penetration->perforatedLayers) {
+            if (std::find(a.perforatedLayers.begin(), a.perforatedLayers.end(), b) ==
+                a.perforatedLayers.end()) {
+                a.perforatedLayers.push_back(b);
+            }
+        }
+    }
+}
+
+/// Particle, node and element counts of the last snapshot.
+void countFinalItems(Assessment& a, const io::Snapshot& snap) {
+    for (std::size_t i = 0; i < snap.particles.z.size(); ++i) {
+        if (sph::isUnusedSlot(snap.particles.alive[i], snap.particles.mass[i])) {
+            continue;
+        }
+        ++a.particles;
+        if (snap.particles.alive[i]) {
+            ++a.aliveParticles;
+        } else {
+            ++a.deletedParticles;
+            a.deletedMassMg += snap.particles.mass[i];
+        }
+    }
+    if (snap.fe) {
+        a.nodes = snap.fe->nodes.z.size();
+        a.elements = snap.fe->elements.alive.size();
+        a.aliveElements = static_cast<std::size_t>(
+            std::count(snap.fe->elements.alive.begin(), snap.fe->elements.alive.end(), 1));
+    }
+}
+
+/// The verdict from the worst grade, the axis-band flag and the state at the end.
+void finishRearWall(Assessment& a, const AxisBand& band) {
+    a.axisConfined = a.rearWallPerforated.value_or(false) && band.perforation;
+    if (a.grade) {
+        a.failed = isFailure(*a.grade);
+        // Every sign of failure lies in the axis band: the perforation (if any) in every
+        // perforated snapshot, and every detached spall.
+        a.axisBandOnly = *a.failed && a.layout.axisymmetric &&
+                         (!a.rearWallPerforated.value_or(false) || a.axisConfined) && band.spall;
+        const RearWallPerforation& end = *a.last().rearWall;
+        a.atRest = end.wallMaxSpeedKmS <= a.criteria.restSpeedKmS &&
+                   end.approachingItems <
+                       static_cast<std::size_t>(std::max(1, a.criteria.minCrossingItems));
+    }
+}
+
+/// Warnings about how far the verdict can be trusted, from the whole assessment.
+void addEndWarnings(Assessment& a) {
+    if (a.energy.rows == 0) {
+        a.warnings.push_back("/history is empty: no energy error");
+    } else if (!a.energy.maxError) {
+        a.warnings.push_back("/history/EnergyError is not finite at t = " +
+                             fmt("%.4g", a.energy.maxErrorTimeUs.value_or(0.0)) +
+                             " us: the run blew up");
+    }
+    if (a.hasRunFacts && a.rearWallPerforated &&
+        stringFact(a.runFacts, "stop_reason", "") == "rear_wall_perforated" &&
+        !*a.rearWallPerforated) {
+        a.warnings.push_back("the solver stopped on its rear-wall perforation rule (any "
+                             "material behind the rear face) but the assessment finds no "
+                             "perforation (docs/metrics.md); the verdict follows the damage "
+                             "grade");
+    }
+    if (a.axisConfined) {
+        a.warnings.push_back(
+            "the rear wall is perforated only within " + fmt("%.3g", a.perforationRadiusMm) +
+            " mm of the axis (" + fmt("%.3g", a.criteria.axisBandSpacings) +
+            " spacings): in 2D axisymmetry material on the axis cannot move off it, and the "
+            "verdict rests on the first element columns there (docs/metrics.md)");
+    }
+    if (a.failed && !*a.failed && !a.complete) {
+        a.warnings.push_back("NP is provisional: the run did not finish");
+    }
+    if (a.failed && !*a.failed && !a.atRest) {
+        const RearWallPerforation& end = *a.last().rearWall;
+        a.warnings.push_back(
+            "NP is provisional: the run ended (" + stringFact(a.runFacts, "stop_reason", a.status) +
+            ") with the rear wall still moving at " + fmt("%.3g", end.wallMaxSpeedKmS) +
+            " km/s and " + std::to_string(end.approachingItems) +
+            " items move toward it at up to " + fmt("%.3g", end.approachingMaxSpeedKmS) +
+            " km/s (at rest: below " + fmt("%.3g", a.criteria.restSpeedKmS) +
+            " km/s); rerun with a later --end-time-us");
+    }
+    if (a.axisBandOnly && !a.axisConfined) {
+        a.warnings.push_back("the rear wall's detached spall lies only within " +
+                             fmt("%.3g", a.spallRadiusMm) +
+                             " mm of the axis: the verdict rests on the axis band "
+                             "(docs/metrics.md)");
+    }
+    if (a.last().hole && a.last().hole->reachesEdge) {
+        a.warnings.push_back("the bumper hole reaches the edge of the bumper as simulated: "
+                             "the hole diameter is a lower bound");
+    }
+}
+
 } // namespace
 
 Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& options) {
@@ -135,8 +287,7 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
         }
     }
 
-    bool confinedWhenPerforated = true; // every perforated snapshot within the axis band
-    bool spallInBand = true;            // every detached spall within the axis band
+    AxisBand band;
     for (const auto& info : a.snapshots) {
         io::Snapshot snap =
             info.index == a.first.info.index ? a.first : reader.readSnapshot(info.index);
@@ -159,57 +310,8 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
         m.debris = debrisCloud(items, a.layout, a.criteria);
 
         // Combine over time.
-        if (m.rearWall) {
-            const BodyLayout& wall = a.layout.bodies[*a.layout.rearWall];
-            m.grade = damageGrade(*m.rearWall, wall.spacing, a.criteria);
-            if (!a.grade || m.grade > *a.grade) {
-                a.grade = m.grade;
-            }
-            if (isFailure(m.grade) && !a.failureTimeUs) {
-                a.failureTimeUs = m.timeUs;
-            }
-            if (m.rearWall->detachedSpall) {
-                a.spallRadiusMm = std::max(a.spallRadiusMm, m.rearWall->spallRadiusMm);
-                a.spallMassMg = std::max(a.spallMassMg, m.rearWall->spallMassMg);
-                spallInBand &= m.rearWall->spallAxisConfined;
-            }
-            a.bulgeMm = std::max(a.bulgeMm, m.rearWall->bulgeMm);
-            if (!a.rearWallPerforated) {
-                a.rearWallPerforated = false;
-            }
-            if (m.rearWall->perforated && !*a.rearWallPerforated) {
-                a.rearWallPerforated = true;
-                a.perforationTimeUs = m.timeUs;
-            }
-            a.throughThicknessFailure |= m.rearWall->throughThicknessFailure;
-            a.materialCrossed |= m.rearWall->materialCrossed;
-            a.detachedSpall |= m.rearWall->detachedSpall;
-            a.openColumns = std::max(a.openColumns, m.rearWall->openColumns);
-            a.openRadiusMm = std::max(a.openRadiusMm, m.rearWall->openRadiusMm);
-            if (m.rearWall->perforated) {
-                a.perforationRadiusMm =
-                    std::max(a.perforationRadiusMm, m.rearWall->perforationRadiusMm);
-                confinedWhenPerforated &= m.rearWall->axisConfined;
-            }
-        }
-        if (m.penetration) {
-            if (!a.penetrationDepthMm || m.penetration->depthMm > *a.penetrationDepthMm) {
-                a.penetrationDepthMm = m.penetration->depthMm;
-                a.deepestBody = m.penetration->deepestBody;
-            }
-            for (auto b : m.penetration->reachedBodies) {
-                if (std::find(a.reachedBodies.begin(), a.reachedBodies.end(), b) ==
-                    a.reachedBodies.end()) {
-                    a.reachedBodies.push_back(b);
-                }
-            }
-            for (auto b : m.penetration->perforatedLayers) {
-                if (std::find(a.perforatedLayers.begin(), a.perforatedLayers.end(), b) ==
-                    a.perforatedLayers.end()) {
-                    a.perforatedLayers.push_back(b);
-                }
-            }
-        }
+        combineRearWall(a, m, band);
+        combinePenetration(a, m);
         if (m.coreDamageWidthMm) {
             a.coreDamageWidthMm = std::max(a.coreDamageWidthMm.value_or(0.0), *m.coreDamageWidthMm);
         }
@@ -218,91 +320,19 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
                                        m.debris.leadingEdgeDepthMm);
         }
         if (&info == &a.snapshots.back()) {
-            for (std::size_t i = 0; i < snap.particles.z.size(); ++i) {
-                if (sph::isUnusedSlot(snap.particles.alive[i], snap.particles.mass[i])) {
-                    continue;
-                }
-                ++a.particles;
-                if (snap.particles.alive[i]) {
-                    ++a.aliveParticles;
-                } else {
-                    ++a.deletedParticles;
-                    a.deletedMassMg += snap.particles.mass[i];
-                }
-            }
-            if (snap.fe) {
-                a.nodes = snap.fe->nodes.z.size();
-                a.elements = snap.fe->elements.alive.size();
-                a.aliveElements = static_cast<std::size_t>(
-                    std::count(snap.fe->elements.alive.begin(), snap.fe->elements.alive.end(), 1));
-            }
+            countFinalItems(a, snap);
         }
         a.series.push_back(std::move(m));
         if (options.keepSnapshots.count(info.index)) {
             a.kept.push_back(std::move(snap));
         }
     }
-    a.axisConfined = a.rearWallPerforated.value_or(false) && confinedWhenPerforated;
-    if (a.grade) {
-        a.failed = isFailure(*a.grade);
-        // Every sign of failure lies in the axis band: the perforation (if any) in every
-        // perforated snapshot, and every detached spall.
-        a.axisBandOnly = *a.failed && a.layout.axisymmetric &&
-                         (!a.rearWallPerforated.value_or(false) || a.axisConfined) && spallInBand;
-        const RearWallPerforation& end = *a.last().rearWall;
-        a.atRest = end.wallMaxSpeedKmS <= a.criteria.restSpeedKmS &&
-                   end.approachingItems < static_cast<std::size_t>(
-                                              std::max(1, a.criteria.minCrossingItems));
-    }
+    finishRearWall(a, band);
     std::sort(a.reachedBodies.begin(), a.reachedBodies.end());
     std::sort(a.perforatedLayers.begin(), a.perforatedLayers.end());
 
     a.energy = energyBudget(a.history);
-    if (a.energy.rows == 0) {
-        a.warnings.push_back("/history is empty: no energy error");
-    } else if (!a.energy.maxError) {
-        a.warnings.push_back("/history/EnergyError is not finite at t = " +
-                             fmt("%.4g", a.energy.maxErrorTimeUs.value_or(0.0)) +
-                             " us: the run blew up");
-    }
-    if (a.hasRunFacts && a.rearWallPerforated &&
-        stringFact(a.runFacts, "stop_reason", "") == "rear_wall_perforated" &&
-        !*a.rearWallPerforated) {
-        a.warnings.push_back("the solver stopped on its rear-wall perforation rule (any "
-                             "material behind the rear face) but the assessment finds no "
-                             "perforation (docs/metrics.md); the verdict follows the damage "
-                             "grade");
-    }
-    if (a.axisConfined) {
-        a.warnings.push_back(
-            "the rear wall is perforated only within " + fmt("%.3g", a.perforationRadiusMm) +
-            " mm of the axis (" + fmt("%.3g", a.criteria.axisBandSpacings) +
-            " spacings): in 2D axisymmetry material on the axis cannot move off it, and the "
-            "verdict rests on the first element columns there (docs/metrics.md)");
-    }
-    if (a.failed && !*a.failed && !a.complete) {
-        a.warnings.push_back("NP is provisional: the run did not finish");
-    }
-    if (a.failed && !*a.failed && !a.atRest) {
-        const RearWallPerforation& end = *a.last().rearWall;
-        a.warnings.push_back(
-            "NP is provisional: the run ended (" + stringFact(a.runFacts, "stop_reason", a.status) +
-            ") with the rear wall still moving at " +
-            fmt("%.3g", end.wallMaxSpeedKmS) + " km/s and " +
-            std::to_string(end.approachingItems) + " items move toward it at up to " +
-            fmt("%.3g", end.approachingMaxSpeedKmS) + " km/s (at rest: below " +
-            fmt("%.3g", a.criteria.restSpeedKmS) + " km/s); rerun with a later --end-time-us");
-    }
-    if (a.axisBandOnly && !a.axisConfined) {
-        a.warnings.push_back("the rear wall's detached spall lies only within " +
-                             fmt("%.3g", a.spallRadiusMm) +
-                             " mm of the axis: the verdict rests on the axis band "
-                             "(docs/metrics.md)");
-    }
-    if (a.last().hole && a.last().hole->reachesEdge) {
-        a.warnings.push_back("the bumper hole reaches the edge of the bumper as simulated: "
-                             "the hole diameter is a lower bound");
-    }
+    addEndWarnings(a);
     return a;
 }
 

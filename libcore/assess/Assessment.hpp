@@ -65,14 +65,14 @@ struct Assessment {
     bool referencePositions = true; ///< every snapshot kept the first one's item slots
 
     // Combined over time.
-    std::optional<bool> failed;            ///< the verdict: P when the worst grade fails
-    std::optional<DamageGrade> grade;      ///< the worst grade over the snapshots
-    std::optional<double> failureTimeUs;   ///< first snapshot with a failing grade
-    bool axisBandOnly = false;             ///< failed, and every sign of it in the axis band
-    double spallRadiusMm = 0.0;            ///< largest detached-spall radius over the snapshots
-    double spallMassMg = 0.0;              ///< largest detached-spall mass over the snapshots
-    double bulgeMm = 0.0;                  ///< largest bulge over the snapshots
-    bool atRest = false;                   ///< the wall and what approaches it, at the end
+    std::optional<bool> failed;          ///< the verdict: P when the worst grade fails
+    std::optional<DamageGrade> grade;    ///< the worst grade over the snapshots
+    std::optional<double> failureTimeUs; ///< first snapshot with a failing grade
+    bool axisBandOnly = false;           ///< failed, and every sign of it in the axis band
+    double spallRadiusMm = 0.0;          ///< largest detached-spall radius over the snapshots
+    double spallMassMg = 0.0;            ///< largest detached-spall mass over the snapshots
+    double bulgeMm = 0.0;                ///< largest bulge over the snapshots
+    bool atRest = false;                 ///< the wall and what approaches it, at the end
     std::optional<bool> rearWallPerforated;
     std::optional<double> perforationTimeUs;
     bool throughThicknessFailure = false, materialCrossed = false, detachedSpall = false;

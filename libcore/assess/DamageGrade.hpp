@@ -28,9 +28,12 @@ enum class DamageGrade { None = 0, Crater, Bulge, DetachedSpall, Perforation };
 std::string_view toString(DamageGrade grade);
 
 /// The grade of one snapshot's rear wall.
-DamageGrade damageGrade(const RearWallPerforation& wall, double spacingMm, const Criteria& criteria);
+DamageGrade damageGrade(const RearWallPerforation& wall, double spacingMm,
+                        const Criteria& criteria);
 
 /// Whether a grade fails the shield as the tests define failure.
-inline bool isFailure(DamageGrade grade) { return grade >= DamageGrade::DetachedSpall; }
+inline bool isFailure(DamageGrade grade) {
+    return grade >= DamageGrade::DetachedSpall;
+}
 
 } // namespace hvi::assess

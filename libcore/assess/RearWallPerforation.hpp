@@ -60,22 +60,22 @@ struct RearWallPerforation {
     std::size_t crossingItems = 0;
     double crossingMassMg = 0.0;
     std::size_t failedItems = 0;
-    bool detachedSpall = false;           ///< at least minCrossingItems spall items
-    std::size_t spallItems = 0;           ///< wall items detached behind its surface
+    bool detachedSpall = false; ///< at least minCrossingItems spall items
+    std::size_t spallItems = 0; ///< wall items detached behind its surface
     double spallMassMg = 0.0;
-    double spallRadiusMm = 0.0;           ///< outermost spall item's initial r + half a spacing
-    double bulgeMm = 0.0;                 ///< largest outward move of the rear row (drift removed)
-    double dentMm = 0.0;                  ///< largest +z move of the front row (drift removed)
-    bool failedFrontHalf = false;         ///< failed or eroded wall material in its front half
-    bool failedRearHalf = false;          ///< failed wall material in place in its rear half
-    double wallMaxSpeedKmS = 0.0;         ///< fastest |vz| of the wall's unfailed material
-    std::size_t approachingItems = 0;     ///< other items in front of it moving toward it
-    double approachingMaxSpeedKmS = 0.0;  ///< their fastest vz
-    std::size_t openColumns = 0;      ///< columns failed through the whole thickness
-    double openRadiusMm = 0.0;        ///< outer edge of the outermost open column (0: none)
-    double perforationRadiusMm = 0.0; ///< outer radius of the perforation (0: not perforated)
-    bool axisConfined = false;        ///< perforated, all within the axis band (axisymmetric)
-    bool spallAxisConfined = false;   ///< detached spall, all within the axis band
+    double spallRadiusMm = 0.0;          ///< outermost spall item's initial r + half a spacing
+    double bulgeMm = 0.0;                ///< largest outward move of the rear row (drift removed)
+    double dentMm = 0.0;                 ///< largest +z move of the front row (drift removed)
+    bool failedFrontHalf = false;        ///< failed or eroded wall material in its front half
+    bool failedRearHalf = false;         ///< failed wall material in place in its rear half
+    double wallMaxSpeedKmS = 0.0;        ///< fastest |vz| of the wall's unfailed material
+    std::size_t approachingItems = 0;    ///< other items in front of it moving toward it
+    double approachingMaxSpeedKmS = 0.0; ///< their fastest vz
+    std::size_t openColumns = 0;         ///< columns failed through the whole thickness
+    double openRadiusMm = 0.0;           ///< outer edge of the outermost open column (0: none)
+    double perforationRadiusMm = 0.0;    ///< outer radius of the perforation (0: not perforated)
+    bool axisConfined = false;           ///< perforated, all within the axis band (axisymmetric)
+    bool spallAxisConfined = false;      ///< detached spall, all within the axis band
 };
 
 /// The width of the wall's axis band [mm]: Criteria::axisBandSpacings of its columns (one

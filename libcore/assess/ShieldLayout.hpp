@@ -47,7 +47,7 @@ struct ShieldLayout {
     double smoothingLengthFactor = 0.0;  ///< the scene's sph.smoothing_length_factor
     std::optional<double> elementSize;   ///< fe.element_size_mm when the scene has FE bodies
     double endTimeUs = 0.0;
-    double stopDebrisSpeedKmS = 0.0;     ///< the scene's run.stop_debris_speed_km_s
+    double stopDebrisSpeedKmS = 0.0; ///< the scene's run.stop_debris_speed_km_s
     double domainRadius = 0.0;
 
     /// The z from which depths are measured: the bumper's rear face, or (no bumper) the front

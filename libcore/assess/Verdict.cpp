@@ -37,8 +37,7 @@ json verdictJson(const Assessment& a) {
     v["rear_wall_perforated"] = a.rearWallPerforated ? json(*a.rearWallPerforated) : json(nullptr);
     v["axis_band_only"] = a.failed ? json(a.axisBandOnly) : json(nullptr);
     // P stands once reached; NP only once the run finished with the wall at rest.
-    v["verdict_final"] =
-        a.failed ? json(*a.failed || (a.complete && a.atRest)) : json(nullptr);
+    v["verdict_final"] = a.failed ? json(*a.failed || (a.complete && a.atRest)) : json(nullptr);
     v["complete"] = a.complete;
     v["run_status"] = a.status;
     const auto stop = a.runFacts.find("stop_reason");
@@ -89,29 +88,29 @@ json verdictJson(const Assessment& a) {
         const auto reason = a.runFacts.find("stop_reason");
         const json perforationRadius =
             a.rearWallPerforated.value_or(false) ? json(a.perforationRadiusMm) : json(nullptr);
-        v["rear_wall"] = {{"body", w.name},
-                          {"thickness_mm", w.thickness()},
-                          {"perforated", a.rearWallPerforated.value_or(false)},
-                          {"first_perforated_time_us", num(a.perforationTimeUs)},
-                          {"through_thickness_failure", a.throughThicknessFailure},
-                          {"material_crossed", a.materialCrossed},
-                          {"damage_grade", std::string(toString(*a.grade))},
-                          {"first_failed_time_us", num(a.failureTimeUs)},
-                          {"detached_spall", a.detachedSpall},
-                          {"spall_mass_mg", a.spallMassMg},
-                          {"spall_radius_mm", a.detachedSpall ? json(a.spallRadiusMm) : json(nullptr)},
-                          {"bulge_mm", a.bulgeMm},
-                          {"at_rest", a.atRest},
-                          {"end_wall_speed_km_s", a.last().rearWall->wallMaxSpeedKmS},
-                          {"end_approaching_items", a.last().rearWall->approachingItems},
-                          {"end_approaching_speed_km_s",
-                           a.last().rearWall->approachingMaxSpeedKmS},
-                          {"open_columns", a.openColumns},
-                          {"open_radius_mm", a.openRadiusMm},
-                          {"perforation_radius_mm", perforationRadius},
-                          {"axis_confined", a.axisConfined},
-                          {"solver_stop_rule_fired", a.hasRunFacts && reason != a.runFacts.end() &&
-                                                         *reason == "rear_wall_perforated"}};
+        v["rear_wall"] = {
+            {"body", w.name},
+            {"thickness_mm", w.thickness()},
+            {"perforated", a.rearWallPerforated.value_or(false)},
+            {"first_perforated_time_us", num(a.perforationTimeUs)},
+            {"through_thickness_failure", a.throughThicknessFailure},
+            {"material_crossed", a.materialCrossed},
+            {"damage_grade", std::string(toString(*a.grade))},
+            {"first_failed_time_us", num(a.failureTimeUs)},
+            {"detached_spall", a.detachedSpall},
+            {"spall_mass_mg", a.spallMassMg},
+            {"spall_radius_mm", a.detachedSpall ? json(a.spallRadiusMm) : json(nullptr)},
+            {"bulge_mm", a.bulgeMm},
+            {"at_rest", a.atRest},
+            {"end_wall_speed_km_s", a.last().rearWall->wallMaxSpeedKmS},
+            {"end_approaching_items", a.last().rearWall->approachingItems},
+            {"end_approaching_speed_km_s", a.last().rearWall->approachingMaxSpeedKmS},
+            {"open_columns", a.openColumns},
+            {"open_radius_mm", a.openRadiusMm},
+            {"perforation_radius_mm", perforationRadius},
+            {"axis_confined", a.axisConfined},
+            {"solver_stop_rule_fired",
+             a.hasRunFacts && reason != a.runFacts.end() && *reason == "rear_wall_perforated"}};
     } else {
         v["rear_wall"] = nullptr;
     }

@@ -77,8 +77,8 @@ double foamLowVelocityLimitKmS(double angleDeg);
 double foamHighVelocityLimitKmS(double angleDeg);
 
 /// FOAM10 critical diameter [cm] with regime and warnings: foam_ble_reading_b with reading B;
-/// foam_outside_tested_range outside FOAM10's tests; foam_ppi_not_tested when PPI is not 10, 20 or 40 (the 5 % reduction is then
-/// applied below 40 PPI, the conservative side).
+/// foam_outside_tested_range outside FOAM10's tests; foam_ppi_not_tested when PPI is not 10, 20 or
+/// 40 (the 5 % reduction is then applied below 40 PPI, the conservative side).
 CriticalDiameterResult foamSandwichCriticalDiameter(const FoamSandwichPanel& panel,
                                                     const Threat& threat,
                                                     const FoamSandwichOptions& options = {});

@@ -79,9 +79,9 @@ struct ThreatSpec {
 
 /// The two facesheets and the space between them.
 struct PanelFrame {
-    double frontFacesheetMm = kMissing; ///< t_f, the bumper
-    double coreThicknessMm = kMissing;  ///< S, the standoff between the facesheets
-    double rearFacesheetMm = kMissing;  ///< t_r, the rear wall
+    double frontFacesheetMm = kMissing;               ///< t_f, the bumper
+    double coreThicknessMm = kMissing;                ///< S, the standoff between the facesheets
+    double rearFacesheetMm = kMissing;                ///< t_r, the rear wall
     std::string facesheetMaterial = "Al6061-T6";      ///< the core's default material too
     std::string frontFacesheetMaterial = "Al6061-T6"; ///< the bumper
     std::string rearFacesheetMaterial = "Al6061-T6";  ///< the rear wall

@@ -24,10 +24,10 @@
 #include "scene/Scene.hpp"
 #include "solver/ErodedParticles.hpp"
 #include "solver/MaterialPackage.hpp"
+#include "solver/SceneLibrary.hpp"
 #include "sph/NeighbourSearch.hpp"
 #include "sph/ParticleGenerator.hpp"
 #include "sph/SphHydro.hpp"
-#include "solver/SceneLibrary.hpp"
 
 #include <memory>
 #include <optional>
@@ -38,12 +38,12 @@ namespace hvi::solver {
 
 /// Conservation ledger at one instant.
 struct Totals {
-    double kinetic = 0.0;        ///< particles and nodes [J] (planar: J/mm)
-    double internal = 0.0;       ///< particles and alive elements [J]
-    double deletedEnergy = 0.0;  ///< deleted particles and free nodes, eroded elements [J]
-    double mass = 0.0;           ///< alive mass (particles and nodes) [mg]
-    double deletedMass = 0.0;    ///< [mg]
-    double momentumZ = 0.0;      ///< alive z-momentum [mg km/s]
+    double kinetic = 0.0;       ///< particles and nodes [J] (planar: J/mm)
+    double internal = 0.0;      ///< particles and alive elements [J]
+    double deletedEnergy = 0.0; ///< deleted particles and free nodes, eroded elements [J]
+    double mass = 0.0;          ///< alive mass (particles and nodes) [mg]
+    double deletedMass = 0.0;   ///< [mg]
+    double momentumZ = 0.0;     ///< alive z-momentum [mg km/s]
     double deletedMomentumZ = 0.0;
     std::size_t alive = 0, deleted = 0, active = 0; ///< particles
     std::size_t erodedElements = 0;
@@ -110,9 +110,9 @@ public:
     /// Restores time and counters after a checkpoint's particle and FE arrays were loaded, and
     /// the derived state (pressures, neighbour lists); the caller then restores the rates
     /// (rates()) and the votes (restoreVotes), which depend on the step's predicted state.
-    void restoreClock(double time, long step, double dt, double initialEnergy,
-                      double deletedEnergy, double deletedMass, double deletedMomentumZ,
-                      std::size_t runaway, std::size_t outOfDomain, double erodedEnergy = 0.0,
+    void restoreClock(double time, long step, double dt, double initialEnergy, double deletedEnergy,
+                      double deletedMass, double deletedMomentumZ, std::size_t runaway,
+                      std::size_t outOfDomain, double erodedEnergy = 0.0,
                       std::size_t erodedCount = 0);
     /// The rates of the last step (the first kick of the next step uses them; checkpointed).
     const sph::ParticleRates& rates() const { return m_rates; }
@@ -174,7 +174,7 @@ private:
     double m_lastProgressTime = 0.0;
     double m_progressFront = -1e300;
     double m_progressCentre = -1e300; ///< furthest centre of mass of the moving material
-    double m_debrisSpeed = 0.0; ///< fastest forward speed of any alive particle [km/s]
+    double m_debrisSpeed = 0.0;       ///< fastest forward speed of any alive particle [km/s]
     /// Material still moves toward or in the rear wall faster than the stop speed: the
     /// no-new-penetration rule waits (updateRearWallActivity).
     bool m_rearWallActive = false;

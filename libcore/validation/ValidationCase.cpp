@@ -122,7 +122,8 @@ void addDevelopmentCases(std::vector<Case>& cases) {
         c.id = t.at("id");
         c.shield = Shield::Whipple;
         common(t, c);
-        c.front = {mapMaterial(t.at("bumper").at("material"), c), t.at("bumper").at("thickness_mm")};
+        c.front = {mapMaterial(t.at("bumper").at("material"), c),
+                   t.at("bumper").at("thickness_mm")};
         c.rear = {mapMaterial(t.at("rear_wall").at("material"), c),
                   t.at("rear_wall").at("thickness_mm")};
         if (t.at("rear_wall").contains("yield_ksi")) {
@@ -186,9 +187,9 @@ std::vector<Case> selectCases(const std::string& selection) {
     std::vector<Case> out;
     if (selection == "quick" || selection == "ci") {
         const std::vector<const char*> ids =
-            selection == "ci" ? std::vector<const char*>{"HITF03147-2", "A1076"}
-                              : std::vector<const char*>{"HITF03147-2", "HITF03147-3", "A1076",
-                                                         "A1077"};
+            selection == "ci"
+                ? std::vector<const char*>{"HITF03147-2", "A1076"}
+                : std::vector<const char*>{"HITF03147-2", "HITF03147-3", "A1076", "A1077"};
         for (const char* id : ids) {
             out.push_back(findCase(id));
         }

@@ -38,17 +38,17 @@ struct Case {
     double projectileDensityGCm3 = 0.0;
     double diameterMm = 0.0;
     double velocityKmS = 0.0;
-    Plate front; ///< bumper or front facesheet
+    Plate front;        ///< bumper or front facesheet
     double gapMm = 0.0; ///< Whipple standoff (bumper back to wall front) or core thickness
     Plate rear;         ///< rear wall or rear facesheet
     std::optional<double> rearYieldKsi;
     // Cores.
     std::string coreMaterial;
-    double relativeDensityPercent = 0.0, ppi = 0.0;     ///< foam
-    std::optional<double> panelArealDensityGCm2;        ///< foam: measured (FOAM10 Table 1)
-    double cellSizeMm = 0.0, foilThicknessMm = 0.0;     ///< honeycomb
-    std::string result; ///< "P" or "NP": the test's
-    std::string source; ///< the original report
+    double relativeDensityPercent = 0.0, ppi = 0.0; ///< foam
+    std::optional<double> panelArealDensityGCm2;    ///< foam: measured (FOAM10 Table 1)
+    double cellSizeMm = 0.0, foilThicknessMm = 0.0; ///< honeycomb
+    std::string result;                             ///< "P" or "NP": the test's
+    std::string source;                             ///< the original report
     std::vector<std::string> assumptions;
 };
 

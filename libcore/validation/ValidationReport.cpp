@@ -49,9 +49,8 @@ Row readRow(const Case& c, const fs::path& dir) {
         }
         if ((*v)["verdict"].is_string()) {
             row.ours = (*v)["verdict"].get<std::string>();
-            row.grade = (*v)["damage_grade"].is_string()
-                            ? (*v)["damage_grade"].get<std::string>()
-                            : std::string();
+            row.grade = (*v)["damage_grade"].is_string() ? (*v)["damage_grade"].get<std::string>()
+                                                         : std::string();
             row.final = (*v)["verdict_final"] == true;
             row.axisOnly = (*v)["axis_band_only"] == true;
         }
@@ -154,16 +153,17 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
         md << "| " << shield << " | " << casesOf[shield] << " | " << t.first.text() << " | "
            << bleSame.text() << " | " << t.second.text() << " |\n";
     }
-    md << "| all | " << rows.size() << " | " << oursAll.text() << " | " << bleOnRun.text()
-       << " | " << bleAll.text() << " |\n\n";
+    md << "| all | " << rows.size() << " | " << oursAll.text() << " | " << bleOnRun.text() << " | "
+       << bleAll.text() << " |\n\n";
     md << "| speed | ours | BLE on all |\n|---|---|---|\n";
     for (const auto& [band, t] : bySpeed) {
         md << "| " << band << " | " << t.first.text() << " | " << t.second.text() << " |\n";
     }
     md << "\nConfusion matrix of ours (test in rows): P/P " << tp << ", P/NP (missed) " << fn
        << ", NP/P (false alarm) " << fp << ", NP/NP " << tn << ". P verdicts resting on the axis "
-       << "band alone: " << axisOnly << ". Provisional NP verdicts (run ended before rest): "
-       << provisional << ". Not run: " << notRun << " of " << rows.size()
+       << "band alone: " << axisOnly
+       << ". Provisional NP verdicts (run ended before rest): " << provisional
+       << ". Not run: " << notRun << " of " << rows.size()
        << ". Wall time of the runs: " << fmt("%.0f", wall) << " s.\n\n";
 
     md << "## Cases\n\n"

@@ -120,7 +120,8 @@ TEST(BleSizeCli, ThesisCompatReproducesTableVRearWall) {
 
 TEST(BleSizeCli, BadInputsAreRejectedWithPointerAndNoOutput) {
     expectRejected("missing", R"({"threat": {"velocity_km_s": 6.76},
-        "shield": {"type": "whipple", "standoff_mm": 50}})", "/threat/diameter_mm");
+        "shield": {"type": "whipple", "standoff_mm": 50}})",
+                   "/threat/diameter_mm");
     expectRejected("negative", R"({"threat": {"diameter_mm": -1, "velocity_km_s": 6.76},
         "shield": {"type": "whipple", "bumper_mm": 1, "rear_wall_mm": 1, "standoff_mm": 50}})",
                    "/threat/diameter_mm");
@@ -138,9 +139,11 @@ TEST(BleSizeCli, BadInputsAreRejectedWithPointerAndNoOutput) {
                    "/threat/diameter_mm");
     expectRejected("material", R"({"threat": {"diameter_mm": 1, "velocity_km_s": 6,
         "material": "unobtainium"}, "shield": {"type": "whipple", "bumper_mm": 1,
-        "rear_wall_mm": 1, "standoff_mm": 50}})", "/threat/material");
+        "rear_wall_mm": 1, "standoff_mm": 50}})",
+                   "/threat/material");
     expectRejected("perfmissing", R"({"threat": {"diameter_mm": 1, "velocity_km_s": 6},
-        "shield": {"type": "whipple", "standoff_mm": 50}})", "/shield/bumper_mm");
+        "shield": {"type": "whipple", "standoff_mm": 50}})",
+                   "/shield/bumper_mm");
     expectRejected("syntax", "{\"threat\": {", "/");
 }
 

@@ -285,8 +285,8 @@ TEST(Foam2LayersCli, WritesToStdoutByDefault) {
 // A Whipple shield is the panel frame with an empty core: projectile, bumper (SPH), rear wall
 // (FE) at the gap behind the bumper, each with its own material.
 TEST(Foam2LayersCli, WritesAWhippleScene) {
-    const json scene = sceneOf("whipple_A1076.json", {"--rear-facesheet-material", "Al2024-T3"},
-                               "whipple");
+    const json scene =
+        sceneOf("whipple_A1076.json", {"--rear-facesheet-material", "Al2024-T3"}, "whipple");
     ASSERT_FALSE(scene.empty());
     EXPECT_TRUE(validScene(scene));
     EXPECT_TRUE(bodiesWithRole(scene, "core_layer").empty());
@@ -301,8 +301,8 @@ TEST(Foam2LayersCli, WritesAWhippleScene) {
     EXPECT_EQ(projectile[0]["material"], "Al2017-T4");
     EXPECT_EQ(wall[0]["discretization"], "fe");
     // The gap is the JSC standoff: from the bumper's back (0.64) to the wall's front.
-    EXPECT_TRUE(near("rear wall front", wall[0]["shape"]["z_front_mm"].get<double>(), 60.64, 1e-12,
-                     0.0));
+    EXPECT_TRUE(
+        near("rear wall front", wall[0]["shape"]["z_front_mm"].get<double>(), 60.64, 1e-12, 0.0));
     EXPECT_TRUE(near("rear wall thickness", wall[0]["shape"]["thickness_mm"].get<double>(), 0.41,
                      1e-12, 0.0));
     EXPECT_EQ(scene["summary"]["shield"], "whipple");
@@ -310,11 +310,11 @@ TEST(Foam2LayersCli, WritesAWhippleScene) {
 
 TEST(Foam2LayersCli, AFoamPanelWithoutItsPpiIsRefusedWithAHint) {
     const auto out = freshOutput("foam_no_ppi.scene.json");
-    const auto run = runTool(kTool,
-                             {"--diameter-mm", "1", "--velocity-km-s", "6", "--facesheet-mm",
-                              "0.25", "--standoff-mm", "12.7", "--relative-density-percent", "7",
-                              "-o", out.string()},
-                             "foam_no_ppi");
+    const auto run =
+        runTool(kTool,
+                {"--diameter-mm", "1", "--velocity-km-s", "6", "--facesheet-mm", "0.25",
+                 "--standoff-mm", "12.7", "--relative-density-percent", "7", "-o", out.string()},
+                "foam_no_ppi");
     EXPECT_EQ(run.exitCode, 2) << run.err;
     EXPECT_TRUE(oneErrorLine(run, kTool, "<flags>", "/panel/ppi"));
     EXPECT_NE(run.err.find("panel type whipple"), std::string::npos) << run.err;

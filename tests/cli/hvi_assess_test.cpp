@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <sstream>
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 using namespace hvi;
 using namespace hvi::test;

@@ -51,9 +51,9 @@ TEST(HviValidateCli, InputsAreAcceptedByTheTools) {
         ASSERT_EQ(r.exitCode, 0) << r.err;
         std::string writer = readText(dir / "writer");
         writer.pop_back();
-        const auto scene = runTool(writer, (dir / "panel.json").string() +
-                                               " --particle-spacing-mm 0.05 -o " +
-                                               (dir / "scene.json").string());
+        const auto scene =
+            runTool(writer, (dir / "panel.json").string() + " --particle-spacing-mm 0.05 -o " +
+                                (dir / "scene.json").string());
         EXPECT_EQ(scene.exitCode, 0) << id << ": " << scene.err;
         const auto ble = runTool("ble-size", (dir / "constraints.json").string() + " -o " +
                                                  (dir / "ble.json").string());
@@ -80,8 +80,7 @@ TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
     const std::string command = "make -s -C " + sourcePath("workflows").string() +
                                 " validate SET=ci RESOLUTION=0.1 THREADS=1 BIN=" +
                                 toolPath("hvi-run").parent_path().parent_path().string() +
-                                " OUT=" + out.string() + " >" + (out.string() + ".log") +
-                                " 2>&1";
+                                " OUT=" + out.string() + " >" + (out.string() + ".log") + " 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << readText(out.string() + ".log");
     const std::string report = readText(out / "validation.md");
     for (const char* id : {"| HITF03147-2 | foam |", "| A1076 | whipple |"}) {

@@ -122,9 +122,8 @@ TEST(DamageGrade, TwoDetachedParticlesAreNotSpall) {
     // Two particles are below Criteria::minCrossingItems (3): numerical noise, not spall.
     SyntheticRun run(test::whippleScene());
     auto& snap = run.addSnapshot(1.0);
-    moveWall(run, snap, 1.0, 0.5, 1.0, [](double z0, double r0) {
-        return r0 > 1.0 && r0 < 1.1 && z0 > kWallRear - 0.05;
-    });
+    moveWall(run, snap, 1.0, 0.5, 1.0,
+             [](double z0, double r0) { return r0 > 1.0 && r0 < 1.1 && z0 > kWallRear - 0.05; });
     const auto a = test::assessSynthetic(run, "grade_two_spall");
     EXPECT_FALSE(a.detachedSpall);
     EXPECT_EQ(assess::verdictJson(a)["verdict"], "NP");

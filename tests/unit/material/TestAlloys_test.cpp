@@ -47,7 +47,7 @@ bool isStandIn(const std::string& name) {
 
 TEST(TestAlloys, BleRowsEqualNasaTableOne) {
     const BleRow rows[] = {
-        {"Al1100-O", 2.71, 5.0, 5.05, 23.0},   {"Al2024-T3", 2.77, 50.0, 5.11, 120.0},
+        {"Al1100-O", 2.71, 5.0, 5.05, 23.0},    {"Al2024-T3", 2.77, 50.0, 5.11, 120.0},
         {"Al2024-T4", 2.77, 47.0, 5.11, 120.0}, {"Al6061-O", 2.70, 8.0, 5.05, 30.0},
         {"Al7075-T6", 2.80, 73.0, 5.04, 150.0}, {"Al7075-T73", 2.80, 63.0, 5.04, 135.0},
         {"Al6061-T6", 2.70, 40.0, 5.05, 95.0},
@@ -63,10 +63,9 @@ TEST(TestAlloys, BleRowsEqualNasaTableOne) {
 }
 
 TEST(TestAlloys, EveryAlloyOfTheTestsIsInBothTables) {
-    for (const char* name :
-         {"Al1100-O", "Al2017-T4", "Al2024-T3", "Al2024-T4", "Al2024-T81", "Al5052-H39",
-          "Al5056-H39", "Al6061-O", "Al6061-T6", "Al6101-T6", "Al7075-T6", "Al7075-T73",
-          "Al99.9%"}) {
+    for (const char* name : {"Al1100-O", "Al2017-T4", "Al2024-T3", "Al2024-T4", "Al2024-T81",
+                             "Al5052-H39", "Al5056-H39", "Al6061-O", "Al6061-T6", "Al6101-T6",
+                             "Al7075-T6", "Al7075-T73", "Al99.9%"}) {
         const auto* ble = ble::findBleMaterial(name);
         ASSERT_NE(ble, nullptr) << name;
         EXPECT_TRUE(ble->yieldKsi.has_value()) << name;
@@ -100,13 +99,13 @@ TEST(TestAlloys, HugoniotsEqualSteinberg) {
 
 TEST(TestAlloys, JohnsonCookSetsEqualTheirPapers) {
     const JcSet sets[] = {
-        {"Al2024-T4", 265.0, 426.0, 0.34, 0.015, 1.0}, // Johnson & Cook 1983, 2024-T351
+        {"Al2024-T4", 265.0, 426.0, 0.34, 0.015, 1.0},  // Johnson & Cook 1983, 2024-T351
         {"Al2024-T3", 369.0, 684.0, 0.73, 0.0083, 1.7}, // Lesuer 2000
         {"Al7075-T6", 546.0, 674.0, 0.72, 0.059, 1.56}, // Brar et al. 2009
     };
     for (const auto& jc : sets) {
-        const auto& s =
-            std::get<material::JohnsonCookStrength>(MaterialLibrary::builtin().get(jc.name).strength);
+        const auto& s = std::get<material::JohnsonCookStrength>(
+            MaterialLibrary::builtin().get(jc.name).strength);
         EXPECT_NEAR(s.yieldStress, jc.A * 1e-3, kPrinted) << jc.name; // GPa
         EXPECT_NEAR(s.hardeningModulus, jc.B * 1e-3, kPrinted) << jc.name;
         EXPECT_NEAR(s.hardeningExponent, jc.n, kPrinted) << jc.name;

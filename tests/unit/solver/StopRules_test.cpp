@@ -124,8 +124,8 @@ TEST(StopRules, NoNewPenetrationStillFiresWhenNothingMovesTowardTheRearWall) {
                       {"domain", {{"radius_mm", 2.2}}},
                       {"bodies",
                        {marker, pusher, test::plateBody("bumper", "bumper", 0.0, 0.2, 1.0),
-                        test::plateBody("layer", "core_layer", 0.74, 0.8, 2.0, 1.4),
-                        ejecta, test::plateBody("wall", "rear_wall", 2.0, 0.2, 1.0)}}};
+                        test::plateBody("layer", "core_layer", 0.74, 0.8, 2.0, 1.4), ejecta,
+                        test::plateBody("wall", "rear_wall", 2.0, 0.2, 1.0)}}};
     const auto scene = test::makeScene(doc);
     solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
     test::runUntil(sim, 3.0);

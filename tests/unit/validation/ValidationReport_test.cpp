@@ -15,9 +15,9 @@ namespace {
 
 void writeCase(const fs::path& dir, const std::string& verdict, bool axisOnly, double bleRatio) {
     fs::create_directories(dir);
-    nlohmann::json v = {{"verdict", verdict},         {"damage_grade", "perforation"},
-                        {"verdict_final", true},      {"axis_band_only", axisOnly},
-                        {"wall_time_s", 10.0},        {"energy_error", 1e-3}};
+    nlohmann::json v = {{"verdict", verdict},    {"damage_grade", "perforation"},
+                        {"verdict_final", true}, {"axis_band_only", axisOnly},
+                        {"wall_time_s", 10.0},   {"energy_error", 1e-3}};
     std::ofstream(dir / "verdict.json") << v.dump();
     nlohmann::json b = {{"performance",
                          {{"verdict", bleRatio >= 1.0 ? "P" : "NP"},
@@ -31,15 +31,16 @@ TEST(ValidationReport, CountsAgreementPerShieldAndTheConfusionMatrix) {
     const auto cases = validation::selectCases("quick"); // -2 NP, -3 P, A1076 P, A1077 NP
     const fs::path out = test::tempPath("validation_report");
     fs::remove_all(out);
-    writeCase(out / "HITF03147-2", "P", false, 1.2);  // false alarm; the BLE too
-    writeCase(out / "HITF03147-3", "P", false, 1.3);  // right
-    writeCase(out / "A1076", "P", true, 1.8);         // right, on the axis band alone
+    writeCase(out / "HITF03147-2", "P", false, 1.2); // false alarm; the BLE too
+    writeCase(out / "HITF03147-3", "P", false, 1.3); // right
+    writeCase(out / "A1076", "P", true, 1.8);        // right, on the axis band alone
     // A1077 not run: only its ble.json.
     fs::create_directories(out / "A1077");
     std::ofstream(out / "A1077" / "ble.json")
         << R"({"performance": {"verdict": "NP", "critical_over_projectile_diameter": 1.25}})";
     const std::string md = validation::validationReport(cases, out, {"quick", "0.04"});
-    EXPECT_NE(md.find("| source_study foam | 2 | 1/2 (50 %) | 1/2 (50 %) | 1/2 (50 %) |"), std::string::npos)
+    EXPECT_NE(md.find("| source_study foam | 2 | 1/2 (50 %) | 1/2 (50 %) | 1/2 (50 %) |"),
+              std::string::npos)
         << md;
     EXPECT_NE(md.find("| source_study whipple | 2 | 1/1 (100 %) | 1/1 (100 %) | 2/2 (100 %) |"),
               std::string::npos)
