@@ -4,7 +4,7 @@
 # Usage: workflows/default/run.sh [OUTDIR] [PARTICLE_SPACING_MM] [END_TIME_US]
 # The source study's calibrated setup: SPH projectile and front facesheet, finite-element foam
 # layers and rear facesheet with erosion. The defaults (0.04 mm spacing; the scene rule's end
-# time, 15 us here, cut short by the stop rules) finish in a few minutes on 2 cores; the
+# time, 30 us here, cut short by the stop rules) finish in a few minutes on 2 cores; the
 # source study's calibrated spacing is 0.015 mm. END_TIME_US overrides the scene rule.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
