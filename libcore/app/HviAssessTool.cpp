@@ -40,7 +40,7 @@ std::string summaryLine(const json& v) {
     }
     line += v["complete"].get<bool>() ? " (complete run" : " (PARTIAL run";
     line += ", t = " + number(v["final_time_us"], "%.3f") + " us";
-    line += v["verdict_final"] == false ? ", not at rest: provisional)" : ")";
+    line += v["verdict_final"] == false ? ", provisional NP)" : ")";
     if (v["axis_band_only"] == true) {
         line += "; failed only in the axis band";
     }

@@ -22,6 +22,39 @@ json bodyNames(const Assessment& a, const std::vector<std::size_t>& bodies) {
     return names;
 }
 
+/// How the verdict was reached; null without a rear wall.
+json rearWallJson(const Assessment& a) {
+    if (!a.layout.rearWall) {
+        return nullptr;
+    }
+    const BodyLayout& w = a.layout.bodies[*a.layout.rearWall];
+    const auto reason = a.runFacts.find("stop_reason");
+    const json perforationRadius =
+        a.rearWallPerforated.value_or(false) ? json(a.perforationRadiusMm) : json(nullptr);
+    return {{"body", w.name},
+            {"thickness_mm", w.thickness()},
+            {"perforated", a.rearWallPerforated.value_or(false)},
+            {"first_perforated_time_us", num(a.perforationTimeUs)},
+            {"through_thickness_failure", a.throughThicknessFailure},
+            {"material_crossed", a.materialCrossed},
+            {"damage_grade", std::string(toString(*a.grade))},
+            {"first_failed_time_us", num(a.failureTimeUs)},
+            {"detached_spall", a.detachedSpall},
+            {"spall_mass_mg", a.spallMassMg},
+            {"spall_radius_mm", a.detachedSpall ? json(a.spallRadiusMm) : json(nullptr)},
+            {"bulge_mm", a.bulgeMm},
+            {"at_rest", a.atRest},
+            {"end_wall_speed_km_s", a.last().rearWall->wallMaxSpeedKmS},
+            {"end_approaching_items", a.last().rearWall->approachingItems},
+            {"end_approaching_speed_km_s", a.last().rearWall->approachingMaxSpeedKmS},
+            {"open_columns", a.openColumns},
+            {"open_radius_mm", a.openRadiusMm},
+            {"perforation_radius_mm", perforationRadius},
+            {"axis_confined", a.axisConfined},
+            {"solver_stop_rule_fired",
+             a.hasRunFacts && reason != a.runFacts.end() && *reason == "rear_wall_perforated"}};
+}
+
 } // namespace
 
 json verdictJson(const Assessment& a) {
@@ -82,38 +115,7 @@ json verdictJson(const Assessment& a) {
                          {"centre_of_mass_speed_km_s", cloudNum(d.centreOfMassSpeedKmS)},
                          {"history", history}};
 
-    // Rear wall.
-    if (L.rearWall) {
-        const BodyLayout& w = L.bodies[*L.rearWall];
-        const auto reason = a.runFacts.find("stop_reason");
-        const json perforationRadius =
-            a.rearWallPerforated.value_or(false) ? json(a.perforationRadiusMm) : json(nullptr);
-        v["rear_wall"] = {
-            {"body", w.name},
-            {"thickness_mm", w.thickness()},
-            {"perforated", a.rearWallPerforated.value_or(false)},
-            {"first_perforated_time_us", num(a.perforationTimeUs)},
-            {"through_thickness_failure", a.throughThicknessFailure},
-            {"material_crossed", a.materialCrossed},
-            {"damage_grade", std::string(toString(*a.grade))},
-            {"first_failed_time_us", num(a.failureTimeUs)},
-            {"detached_spall", a.detachedSpall},
-            {"spall_mass_mg", a.spallMassMg},
-            {"spall_radius_mm", a.detachedSpall ? json(a.spallRadiusMm) : json(nullptr)},
-            {"bulge_mm", a.bulgeMm},
-            {"at_rest", a.atRest},
-            {"end_wall_speed_km_s", a.last().rearWall->wallMaxSpeedKmS},
-            {"end_approaching_items", a.last().rearWall->approachingItems},
-            {"end_approaching_speed_km_s", a.last().rearWall->approachingMaxSpeedKmS},
-            {"open_columns", a.openColumns},
-            {"open_radius_mm", a.openRadiusMm},
-            {"perforation_radius_mm", perforationRadius},
-            {"axis_confined", a.axisConfined},
-            {"solver_stop_rule_fired",
-             a.hasRunFacts && reason != a.runFacts.end() && *reason == "rear_wall_perforated"}};
-    } else {
-        v["rear_wall"] = nullptr;
-    }
+    v["rear_wall"] = rearWallJson(a);
 
     // Penetration.
     if (a.penetrationDepthMm) {
