@@ -132,10 +132,11 @@ void addDevelopmentCases(std::vector<Case>& cases) {
         c.gapMm = t.at("standoff_mm");
         cases.push_back(c);
     }
-    for (const auto& t : doc.at("foam")) {
+    // A sandwich panel's facesheets and core thickness and material.
+    auto sandwich = [&](const json& t, const std::string& prefix, Shield shield) {
         Case c;
-        c.id = "foam-" + t.at("id").get<std::string>();
-        c.shield = Shield::Foam;
+        c.id = prefix + t.at("id").get<std::string>();
+        c.shield = shield;
         common(t, c);
         const json& core = t.at("core");
         c.front = {mapMaterial(t.at("front_facesheet").at("material"), c),
@@ -144,6 +145,11 @@ void addDevelopmentCases(std::vector<Case>& cases) {
                   t.at("rear_facesheet").at("thickness_mm")};
         c.gapMm = core.at("thickness_mm");
         c.coreMaterial = mapMaterial(core.at("material"), c);
+        return c;
+    };
+    for (const auto& t : doc.at("foam")) {
+        Case c = sandwich(t, "foam-", Shield::Foam);
+        const json& core = t.at("core");
         c.relativeDensityPercent = core.at("relative_density_percent");
         c.ppi = core.at("ppi");
         if (t.contains("panel_areal_density_g_cm2")) {
@@ -152,17 +158,8 @@ void addDevelopmentCases(std::vector<Case>& cases) {
         cases.push_back(c);
     }
     for (const auto& t : doc.at("honeycomb")) {
-        Case c;
-        c.id = "hc-" + t.at("id").get<std::string>();
-        c.shield = Shield::Honeycomb;
-        common(t, c);
+        Case c = sandwich(t, "hc-", Shield::Honeycomb);
         const json& core = t.at("core");
-        c.front = {mapMaterial(t.at("front_facesheet").at("material"), c),
-                   t.at("front_facesheet").at("thickness_mm")};
-        c.rear = {mapMaterial(t.at("rear_facesheet").at("material"), c),
-                  t.at("rear_facesheet").at("thickness_mm")};
-        c.gapMm = core.at("thickness_mm");
-        c.coreMaterial = mapMaterial(core.at("material"), c);
         c.cellSizeMm = core.at("cell_size_mm");
         c.foilThicknessMm = core.at("foil_thickness_mm");
         c.assumptions.push_back("cell_size_mm is the database's cell diameter, read as the size "
