@@ -20,7 +20,8 @@ struct Row {
     const Case* c = nullptr;
     std::optional<std::string> ours, grade;
     bool final = false, axisOnly = false;
-    std::optional<double> wallS, energyError;
+    std::optional<double> wallS, energyError, endUs;
+    bool complete = false;
     std::optional<std::string> ble;
     std::optional<double> bleRatio; ///< d / d_c
 };
@@ -56,6 +57,10 @@ Row readRow(const Case& c, const fs::path& dir) {
         }
         if ((*v)["wall_time_s"].is_number()) {
             row.wallS = (*v)["wall_time_s"].get<double>();
+        }
+        row.complete = (*v)["complete"] == true;
+        if ((*v)["final_time_us"].is_number()) {
+            row.endUs = (*v)["final_time_us"].get<double>();
         }
         if ((*v)["energy_error"].is_number()) {
             row.energyError = (*v)["energy_error"].get<double>();
@@ -168,7 +173,9 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
 
     md << "## Cases\n\n"
        << "| case | shield | d mm | V km/s | test | ours | grade | final | axis | BLE | d/d_c | "
-          "run s | energy error |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "run s | energy error | end µs "
+          "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+          "\n";
     for (const auto& r : rows) {
         const Case& c = *r.c;
         md << "| " << c.id << " | " << toString(c.shield) << " | " << fmt("%.3g", c.diameterMm)
@@ -178,7 +185,9 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
            << (r.ours && r.axisOnly ? "yes" : "") << " | " << r.ble.value_or("–") << " | "
            << (r.bleRatio ? fmt("%.2f", *r.bleRatio) : std::string("–")) << " | "
            << (r.wallS ? fmt("%.0f", *r.wallS) : std::string("")) << " | "
-           << (r.energyError ? fmt("%.1e", *r.energyError) : std::string("")) << " |\n";
+           << (r.energyError ? fmt("%.1e", *r.energyError) : std::string("")) << " | "
+           << (r.endUs ? fmt("%.1f", *r.endUs) + (r.complete ? "" : " (partial)") : std::string(""))
+           << " |\n";
     }
     md << "\n## Assumptions\n\n";
     for (const auto& c : cases) {
