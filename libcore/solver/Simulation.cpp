@@ -705,7 +705,6 @@ void Simulation::updateProgress() {
     // pressing on it is progress. With a spacing alone (0.16 km/s for 0.04 mm in 0.25 us)
     // HITF03147-3 stopped at 8.9 us with the debris still pushing its rear facesheet at
     // 0.7 km/s, which tore at 12.2 us.
-    updateRearWallActivity(moving);
     const double window = m_scene.run.stopNoNewPenetration;
     const double advance =
         window > 0.0 && moving > 0.0 ? std::min(m_minSpacing, moving * window) : m_minSpacing;
@@ -714,6 +713,12 @@ void Simulation::updateProgress() {
         m_lastProgressTime = m_time;
         m_progressFront = std::max(front, m_progressFront);
         m_progressCentre = std::max(centre, m_progressCentre);
+    }
+    // The wall check is a pass over every point: made only once progress has stalled for
+    // half the window (the clock advances after this call, so not the whole window).
+    m_rearWallActive = false;
+    if (window > 0.0 && m_time - m_lastProgressTime > 0.5 * window) {
+        updateRearWallActivity(moving);
     }
 }
 
