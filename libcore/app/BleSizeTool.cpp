@@ -83,11 +83,24 @@ void BleSizeTool::addOptions(CLI::App& app) {
                    f.help)
                 ->type_name("NUM");
     }
-    app.add_option_function<std::string>(
-           "--projectile-material",
-           [this](const std::string& v) { m_strings["/threat/material"] = v; },
-           "Projectile material name (--list-materials)")
-        ->type_name("NAME");
+    struct StringFlag {
+        const char* flag;
+        const char* pointer;
+        const char* help;
+    };
+    static const StringFlag stringFlags[] = {
+        {"--projectile-material", "/threat/material", "Projectile material name"},
+        {"--bumper-material", "/shield/bumper_material", "Whipple bumper material"},
+        {"--rear-wall-material", "/shield/rear_wall_material", "Whipple rear-wall material"},
+        {"--material", "/shield/material", "Single-wall or foam-panel material"},
+        {"--facesheet-material", "/shield/facesheet_material", "Honeycomb facesheet material"},
+    };
+    for (const auto& f : stringFlags) {
+        app.add_option_function<std::string>(
+               f.flag, [this, p = std::string(f.pointer)](const std::string& v) { m_strings[p] = v; },
+               std::string(f.help) + " (--list-materials)")
+            ->type_name("NAME");
+    }
 }
 
 namespace {

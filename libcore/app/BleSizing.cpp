@@ -260,6 +260,13 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
             sizing["performance"] = performanceJson(
                 "NASA JSC new non-optimum Whipple (C93 eqs 9-12)", r, threat.diameterCm);
             out.curveLabel = "Whipple NNO";
+            // What foam2layers needs next (its panel type whipple).
+            sizing["panel"] = {{"type", "whipple"},
+                               {"front_facesheet_mm", u::cmToMm(w.bumperCm)},
+                               {"core_thickness_mm", shield.at("standoff_mm")},
+                               {"rear_facesheet_mm", u::cmToMm(w.rearWallCm)},
+                               {"front_facesheet_material", shield.at("bumper_material")},
+                               {"rear_facesheet_material", shield.at("rear_wall_material")}};
         } else {
             ble::StuffedWhippleShield sw;
             sw.bumperDensityGCm3 = rhoB;
@@ -335,6 +342,9 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
         sizing["performance"] =
             performanceJson("Cour-Palais single wall (HB09 4-6), " + fm, r, threat.diameterCm);
         out.curveLabel = "single wall (" + fm + ")";
+        sizing["panel"] = {{"type", "single_wall"},
+                           {"rear_facesheet_mm", u::cmToMm(target.thicknessCm)},
+                           {"rear_facesheet_material", shield.at("material")}};
     } else if (type == "honeycomb_sandwich") {
         const ble::BleMaterial* m = material(shield, "facesheet_material", "/shield", problems);
         const double yield = rearWallYieldKsi(shield, m, "facesheet_material", problems);

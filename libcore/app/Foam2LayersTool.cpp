@@ -41,8 +41,9 @@ const std::vector<KeyLocation>& foamKeys() {
 PanelInputKind foamPanelInputKind() {
     PanelInputKind kind;
     kind.schemaName = "foam_panel";
-    kind.sizingPanelType = "foam_sandwich";
-    kind.otherTypesHint = "foam2layers reads foam panels; hcomb2rings reads honeycomb_sandwich";
+    kind.sizingPanelTypes = {"foam_sandwich", "whipple", "single_wall"};
+    kind.otherTypesHint = "foam2layers reads foam panels, Whipple shields and single walls; "
+                           "hcomb2rings reads honeycomb_sandwich";
     kind.defaultId = "foam_panel";
     kind.sizingPanelDrops = {"core_thickness_source", "rear_wall_yield_ksi", "rear_wall_yield_MPa"};
     kind.materialPointers = {"/threat/material", "/panel/material",
@@ -63,17 +64,18 @@ double facesheetArealMassGCm2(const geometry::PanelFrame& frame) {
                          densityOf(frame.rearFacesheetMaterial) * frame.rearFacesheetMm);
 }
 
-/// The keys one panel type requires and the other may not hold, all reported at once.
-void checkPanelTypeKeys(const PanelInput& input, bool whipple) {
+/// The keys one panel type requires and the others may not hold, all reported at once.
+/// `coreless`: "whipple" or "single_wall", empty for a foam panel.
+void checkPanelTypeKeys(const PanelInput& input, const std::string& coreless) {
     std::vector<InputIssue> issues;
     for (const char* key : {"relative_density_percent", "ppi", "core_material"}) {
         const std::string pointer = std::string("/panel/") + key;
         const bool given = input.resolved.contains(json::json_pointer(pointer));
-        if (whipple && given) {
+        if (!coreless.empty() && given) {
             issues.push_back({input.origin.labelOf(pointer), pointer,
-                              "is given for a Whipple shield (panel type whipple has no core)",
-                              "no foam keys with type whipple, or type foam_sandwich"});
-        } else if (!whipple && !given && std::string(key) != "core_material") {
+                              "is given for panel type " + coreless + ", which has no core",
+                              "no foam keys with type " + coreless + ", or type foam_sandwich"});
+        } else if (coreless.empty() && !given && std::string(key) != "core_material") {
             issues.push_back({input.origin.labelOf(pointer), pointer, "required key is missing",
                               std::string("the foam's ") +
                                   (std::string(key) == "ppi" ? "pores per inch [1/in], > 0"
@@ -86,37 +88,47 @@ void checkPanelTypeKeys(const PanelInput& input, bool whipple) {
     }
 }
 
-/// A Whipple shield: the panel frame with nothing between the facesheets.
-SceneResult buildWhippleScene(const PanelInput& input, const json& provenance) {
+/// A Whipple shield (the panel frame with nothing between the facesheets) or a single wall
+/// (the rear facesheet alone).
+SceneResult buildCorelessScene(const PanelInput& input, const json& provenance) {
     geometry::SceneBuilder builder(input.threat(), input.frame(), input.numerics());
     const geometry::PanelFrame frame = builder.frame();
     SceneResult result;
     for (const auto& warning : builder.warnings()) {
         result.warnings.push_back(warning.message);
     }
+    const geometry::ThreatSpec threat = input.threat();
+    const std::string projectile = formatNumber(threat.diameterMm) + " mm " + threat.material +
+                                   " sphere at " + formatNumber(threat.velocityKmS) + " km/s";
+    const std::string wall =
+        formatNumber(frame.rearFacesheetMm) + " mm " + frame.rearFacesheetMaterial;
     json summary = {
         {"core", "none"},
-        {"shield", "whipple"},
+        {"shield", frame.bumper ? "whipple" : "single_wall"},
         {"input_kind", input.fromSizing ? "ble-size sizing" : "foam_panel"},
-        {"standoff_mm", frame.coreThicknessMm},
-        {"standoff_convention", "gap from the back of the bumper to the front of the rear wall "
-                                "(the NASA JSC Whipple equation's S)"},
         {"panel_areal_mass_g_cm2", facesheetArealMassGCm2(frame)},
-        {"warnings", result.warnings},
     };
-    const geometry::ThreatSpec threat = input.threat();
-    const std::string description =
-        "Whipple shield: " + formatNumber(frame.frontFacesheetMm) + " mm " +
-        frame.frontFacesheetMaterial + " bumper, " + formatNumber(frame.coreThicknessMm) +
-        " mm gap, " + formatNumber(frame.rearFacesheetMm) + " mm " + frame.rearFacesheetMaterial +
-        " rear wall; " + formatNumber(threat.diameterMm) + " mm " + threat.material +
-        " sphere at " + formatNumber(threat.velocityKmS) + " km/s";
+    std::string description;
+    if (frame.bumper) {
+        summary["standoff_mm"] = frame.coreThicknessMm;
+        summary["standoff_convention"] = "gap from the back of the bumper to the front of the "
+                                         "rear wall (the NASA JSC Whipple equation's S)";
+        description = "Whipple shield: " + formatNumber(frame.frontFacesheetMm) + " mm " +
+                      frame.frontFacesheetMaterial + " bumper, " +
+                      formatNumber(frame.coreThicknessMm) + " mm gap, " + wall + " rear wall; " +
+                      projectile;
+        result.report = {input.id() + ": Whipple shield, no core: " +
+                         formatNumber(frame.frontFacesheetMm) + " mm bumper, " +
+                         formatNumber(frame.coreThicknessMm) + " mm gap, " +
+                         formatNumber(frame.rearFacesheetMm) + " mm rear wall"};
+    } else {
+        description = "Single wall: " + wall + " plate; " + projectile;
+        result.report = {input.id() + ": single wall " + formatNumber(frame.rearFacesheetMm) +
+                         " mm, no bumper"};
+    }
+    summary["warnings"] = result.warnings;
     result.scene = builder.sceneJson(input.id(), description, summary, provenance);
     result.feRectangles = builder.feRectangles();
-    result.report = {input.id() +
-                     ": Whipple shield, no core: " + formatNumber(frame.frontFacesheetMm) +
-                     " mm bumper, " + formatNumber(frame.coreThicknessMm) + " mm gap, " +
-                     formatNumber(frame.rearFacesheetMm) + " mm rear wall"};
     for (const auto& line : sharedReport(builder)) {
         result.report.push_back(line);
     }
@@ -126,10 +138,11 @@ SceneResult buildWhippleScene(const PanelInput& input, const json& provenance) {
 } // namespace
 
 SceneResult buildFoamScene(const PanelInput& input, const json& provenance) {
-    const bool whipple = input.text("/panel/type", "foam_sandwich") == "whipple";
-    checkPanelTypeKeys(input, whipple);
-    if (whipple) {
-        return buildWhippleScene(input, provenance);
+    const std::string type = input.text("/panel/type", "foam_sandwich");
+    const std::string coreless = type == "foam_sandwich" ? "" : type;
+    checkPanelTypeKeys(input, coreless);
+    if (!coreless.empty()) {
+        return buildCorelessScene(input, provenance);
     }
     geometry::SceneBuilder builder(input.threat(), input.frame(), input.numerics());
     const geometry::PanelFrame frame = builder.frame();
@@ -261,14 +274,16 @@ Foam2LayersTool::Foam2LayersTool()
                       "Foam-core sandwich panel -> 2D axisymmetric impact scene for hvi-run: the "
                       "open-cell foam core becomes a mass-conserved stack of flat layers "
                       "(effective PPI = ppi_factor x PPI, pores rounded up, layers = pores - 1); "
-                      "with --panel-type whipple, a Whipple shield (the same frame, no core)",
+                      "with --panel-type whipple, a Whipple shield (the same frame, no core); "
+                      "with --panel-type single_wall, a plate alone (--rear-facesheet-mm)",
                       foamPanelInputKind()) {}
 
 void Foam2LayersTool::addCoreOptions(CLI::App& app, FlagOverlay& flags) {
     flags.addString(app, "--panel-type", "/panel/type",
-                    "foam_sandwich (default) or whipple: no core, the facesheets are the bumper "
-                    "and the rear wall and --standoff-mm the gap between them",
-                    {"foam_sandwich", "whipple"});
+                    "foam_sandwich (default); whipple: no core, the facesheets are the bumper "
+                    "and the rear wall and --standoff-mm the gap between them; single_wall: the "
+                    "rear facesheet alone, struck directly",
+                    {"foam_sandwich", "whipple", "single_wall"});
     flags.addString(app, "--core-material", "/panel/core_material",
                     "Foam ligament material (default: --material)");
     flags.addNumber(app, "--relative-density-percent", "/panel/relative_density_percent",

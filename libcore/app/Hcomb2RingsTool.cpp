@@ -39,8 +39,9 @@ const std::vector<KeyLocation>& honeycombKeys() {
 PanelInputKind honeycombPanelInputKind() {
     PanelInputKind kind;
     kind.schemaName = "honeycomb_panel";
-    kind.sizingPanelType = "honeycomb_sandwich";
-    kind.otherTypesHint = "hcomb2rings reads honeycomb panels; foam2layers reads foam_sandwich";
+    kind.sizingPanelTypes = {"honeycomb_sandwich"};
+    kind.otherTypesHint = "hcomb2rings reads honeycomb panels; foam2layers reads foam_sandwich, "
+                           "whipple and single_wall";
     kind.defaultId = "honeycomb_panel";
     kind.sizingPanelDrops = {"core_thickness_source", "equation", "rear_wall_yield_ksi",
                              "rear_wall_yield_MPa"};

@@ -5,6 +5,7 @@
 #include "geometry/InputChecks.hpp"
 #include "io/JsonInput.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -17,6 +18,8 @@ namespace {
 const std::string kFacesheet = "/panel/facesheet_mm";
 const std::string kFront = "/panel/front_facesheet_mm";
 const std::string kRear = "/panel/rear_facesheet_mm";
+const std::string kCore = "/panel/core_thickness_mm";
+const std::string kSingleWall = "single_wall";
 
 bool isSizingFile(const json& document) {
     if (!document.is_object()) {
@@ -42,7 +45,9 @@ json fromSizing(const json& sizing, const std::string& file, const PanelInputKin
             issues.push_back({file, std::string("/") + block,
                               sizing.contains(block) ? "is not an object"
                                                      : "missing from the ble-size sizing file",
-                              std::string("the ") + block + " block ble-size writes"});
+                              std::string("the ") + block +
+                                  " block ble-size writes (a panel block for foam_sandwich, "
+                                  "honeycomb_sandwich, whipple and single_wall shields)"});
         }
     }
     if (!issues.empty()) {
@@ -80,12 +85,21 @@ json fromSizing(const json& sizing, const std::string& file, const PanelInputKin
 
     json panel = sizing["panel"];
     const json type = panel.value("type", json());
-    if (type != kind.sizingPanelType) {
+    const auto& types = kind.sizingPanelTypes;
+    const bool known = type.is_string() && std::find(types.begin(), types.end(),
+                                                     type.get<std::string>()) != types.end();
+    if (!known) {
+        std::string expected;
+        for (const auto& t : types) {
+            expected += (expected.empty() ? "\"" : " or \"") + t + "\"";
+        }
         issues.push_back({file, "/panel/type",
                           type.is_null() ? "required key is missing" : "is " + type.dump(),
-                          "\"" + kind.sizingPanelType + "\" (" + kind.otherTypesHint + ")"});
+                          expected + " (" + kind.otherTypesHint + ")"});
     }
-    panel.erase("type");
+    if (types.size() == 1) {
+        panel.erase("type"); // the tool's only type, its schema's default
+    }
     for (const auto& key : kind.sizingPanelDrops) {
         panel.erase(key);
     }
@@ -123,6 +137,28 @@ void splitFacesheetForFlags(json& document, const FlagOverlay& flags) {
     panel.erase("facesheet_mm");
 }
 
+/// A single wall is the rear facesheet alone: facesheet_mm stands for it, and nothing in
+/// front of it may be given.
+template <typename Add>
+void checkSingleWall(json& panel, const Add& add) {
+    if (panel.contains("facesheet_mm") && panel.contains("rear_facesheet_mm")) {
+        add(kFacesheet, "given together with rear_facesheet_mm",
+            "the wall's thickness once: rear_facesheet_mm (or facesheet_mm)");
+    } else if (panel.contains("facesheet_mm")) {
+        panel["rear_facesheet_mm"] = panel["facesheet_mm"];
+        panel.erase("facesheet_mm");
+    } else if (!panel.contains("rear_facesheet_mm")) {
+        add(kRear, "required key is missing",
+            "the single wall's thickness [mm], > 0 (or facesheet_mm)");
+    }
+    for (const char* key : {"front_facesheet_mm", "core_thickness_mm", "front_facesheet_material"}) {
+        if (panel.contains(key)) {
+            add(std::string("/panel/") + key, "is given for a single wall (it has no bumper)",
+                "no bumper or gap keys with panel type single_wall, or type whipple");
+        }
+    }
+}
+
 /// Step 5: facesheets, core thickness, materials.
 void checkAndNormalise(json& resolved, const PanelInputKind& kind, const InputOrigin& origin) {
     std::vector<InputIssue> issues;
@@ -132,7 +168,11 @@ void checkAndNormalise(json& resolved, const PanelInputKind& kind, const InputOr
     };
     json& panel = resolved["panel"];
     const bool both = panel.contains("facesheet_mm");
-    if (both && (panel.contains("front_facesheet_mm") || panel.contains("rear_facesheet_mm"))) {
+    const bool singleWall = panel.value("type", "") == kSingleWall;
+    if (singleWall) {
+        checkSingleWall(panel, add);
+    } else if (both &&
+               (panel.contains("front_facesheet_mm") || panel.contains("rear_facesheet_mm"))) {
         const std::string other = panel.contains("front_facesheet_mm") ? kFront : kRear;
         add(kFacesheet, "given together with " + other.substr(7),
             "either facesheet_mm (both facesheets) or front_facesheet_mm and rear_facesheet_mm, "
@@ -151,8 +191,13 @@ void checkAndNormalise(json& resolved, const PanelInputKind& kind, const InputOr
                 "rear facesheet thickness [mm], > 0 (or facesheet_mm for both)");
         }
     }
+    if (!singleWall && !panel.contains("core_thickness_mm")) {
+        add(kCore, "required key is missing",
+            "the gap between the facesheets [mm], > 0 (or panel type single_wall for a plate "
+            "without a bumper)");
+    }
     // A Whipple's gap may be shorter than its plates are thick; a sandwich's core may not.
-    if (issues.empty() && panel.value("type", "") != "whipple") {
+    if (issues.empty() && !singleWall && panel.value("type", "") != "whipple") {
         const double front = panel["front_facesheet_mm"].get<double>();
         const double rear = panel["rear_facesheet_mm"].get<double>();
         const double core = panel["core_thickness_mm"].get<double>();
@@ -202,6 +247,7 @@ geometry::ThreatSpec PanelInput::threat() const {
 
 geometry::PanelFrame PanelInput::frame() const {
     geometry::PanelFrame frame;
+    frame.bumper = text("/panel/type") != kSingleWall;
     frame.frontFacesheetMm = number(kFront);
     frame.coreThicknessMm = number("/panel/core_thickness_mm");
     frame.rearFacesheetMm = number(kRear);

@@ -9,9 +9,9 @@
 //   4. the document is validated against the tool's schema (every issue at once, labelled
 //      with the file or "<flags>"), and the schema defaults are filled in;
 //   5. checks a schema cannot make, again all at once: facesheets given either as
-//      facesheet_mm or as front_/rear_facesheet_mm, a core thicker than the two facesheets
-//      together (a thinner one is not a sandwich panel: most likely a unit or key mix-up),
-//      and material names the toolkit knows.
+//      facesheet_mm or as front_/rear_facesheet_mm (a single wall has the rear one only), a
+//      core thicker than the two facesheets together (a thinner one is not a sandwich panel:
+//      most likely a unit or key mix-up), and material names the toolkit knows.
 //
 // The result holds the resolved document (what the scene's provenance records: defaults
 // filled, facesheets as front_ and rear_facesheet_mm) and typed views of the shared parts.
@@ -30,7 +30,7 @@ namespace hvi::app {
 /// What distinguishes the two tools' inputs.
 struct PanelInputKind {
     std::string schemaName;      ///< embedded schema, e.g. "foam_panel"
-    std::string sizingPanelType; ///< the ble-size panel type read, e.g. "foam_sandwich"
+    std::vector<std::string> sizingPanelTypes; ///< ble-size panel types read ("foam_sandwich")
     std::string otherTypesHint;  ///< e.g. "hcomb2rings reads honeycomb_sandwich panels"
     std::string defaultId;       ///< id when neither the input nor its file name gives one
     std::vector<std::string> sizingPanelDrops; ///< ble-size panel keys the scene has no use for

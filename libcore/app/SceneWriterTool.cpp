@@ -76,10 +76,14 @@ std::string formatPercent(double relative) {
 std::vector<std::string> sharedReport(const geometry::SceneBuilder& builder) {
     const auto& numerics = builder.numerics();
     const auto& frame = builder.frame();
-    return {"facesheets " + formatNumber(frame.frontFacesheetMm) + " mm (bumper, sph) and " +
-                formatNumber(frame.rearFacesheetMm) + " mm (rear wall, " +
-                std::string(geometry::toString(numerics.rearWallDiscretization)) + "), core " +
-                std::string(geometry::toString(numerics.coreDiscretization)) +
+    const std::string wall = " mm (rear wall, " +
+                             std::string(geometry::toString(numerics.rearWallDiscretization)) +
+                             ")";
+    return {(frame.bumper ? "facesheets " + formatNumber(frame.frontFacesheetMm) +
+                                " mm (bumper, sph) and " + formatNumber(frame.rearFacesheetMm) +
+                                wall + ", core " +
+                                std::string(geometry::toString(numerics.coreDiscretization))
+                          : "single wall " + formatNumber(frame.rearFacesheetMm) + wall) +
                 ", particle spacing " + formatNumber(numerics.particleSpacingMm) + " mm",
             "domain radius " + formatNumber(builder.domainRadius().value) + " mm (" +
                 (std::isnan(numerics.domainRadiusMm) ? "rule" : "given") + "), end time " +

@@ -274,7 +274,13 @@ Assessment assessRun(const io::RunFileReader& reader, const AssessOptions& optio
     if (!a.layout.rearWall) {
         a.warnings.push_back("the scene has no body with role \"rear_wall\": no P/NP verdict");
     }
-    if (!a.layout.bumper) {
+    std::size_t targets = 0;
+    for (std::size_t b = 0; b < a.layout.bodies.size(); ++b) {
+        targets += a.layout.isTarget(b) ? 1 : 0;
+    }
+    // A single wall (the rear wall the only target) has no bumper by design.
+    const bool singleWall = a.layout.rearWall && targets == 1;
+    if (!a.layout.bumper && !singleWall) {
         a.warnings.push_back("the scene has no body with role \"bumper\": no hole diameter; "
                              "depths are measured from the front of the first target body");
     }

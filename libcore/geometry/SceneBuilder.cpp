@@ -148,8 +148,13 @@ SceneBuilder::SceneBuilder(ThreatSpec threat, PanelFrame frame, SceneNumerics nu
     : m_threat(std::move(threat)), m_frame(std::move(frame)), m_numerics(numerics) {
     requirePositive(m_threat.diameterMm, "threat diameter");
     requirePositive(m_threat.velocityKmS, "threat velocity");
-    requirePositive(m_frame.frontFacesheetMm, "front facesheet thickness");
-    requirePositive(m_frame.coreThicknessMm, "core thickness");
+    if (m_frame.bumper) {
+        requirePositive(m_frame.frontFacesheetMm, "front facesheet thickness");
+        requirePositive(m_frame.coreThicknessMm, "core thickness");
+    } else {
+        m_frame.frontFacesheetMm = 0.0;
+        m_frame.coreThicknessMm = 0.0;
+    }
     requirePositive(m_frame.rearFacesheetMm, "rear facesheet thickness");
     requirePositive(m_numerics.particleSpacingMm, "particle spacing");
     requirePositive(m_numerics.erosionFactor, "erosion factor");
@@ -202,20 +207,22 @@ std::vector<SceneBody> SceneBuilder::bodies() const {
     projectile.velocityZKmS = m_threat.velocityKmS;
     all.push_back(projectile);
 
-    SceneBody bumper;
-    bumper.name = "front_facesheet";
-    bumper.role = "bumper";
-    bumper.zFrontMm = 0.0;
-    bumper.thicknessMm = m_frame.frontFacesheetMm;
-    bumper.outerRadiusMm = m_domainRadius.value;
-    bumper.material = m_frame.frontFacesheetMaterial;
-    bumper.discretization = Discretization::Sph;
-    all.push_back(bumper);
+    if (m_frame.bumper) {
+        SceneBody bumper;
+        bumper.name = "front_facesheet";
+        bumper.role = "bumper";
+        bumper.zFrontMm = 0.0;
+        bumper.thicknessMm = m_frame.frontFacesheetMm;
+        bumper.outerRadiusMm = m_domainRadius.value;
+        bumper.material = m_frame.frontFacesheetMaterial;
+        bumper.discretization = Discretization::Sph;
+        all.push_back(bumper);
+    }
 
     all.insert(all.end(), m_core.begin(), m_core.end());
 
     SceneBody rear;
-    rear.name = "rear_facesheet";
+    rear.name = m_frame.bumper ? "rear_facesheet" : "wall";
     rear.role = "rear_wall";
     rear.zFrontMm = m_frame.frontFacesheetMm + m_frame.coreThicknessMm;
     rear.thicknessMm = m_frame.rearFacesheetMm;
@@ -241,7 +248,10 @@ std::vector<MeshRectangle> SceneBuilder::feRectangles() const {
 
 std::vector<GeometryWarning> SceneBuilder::warnings() const {
     std::vector<GeometryWarning> out;
-    checkResolution(out, "front facesheet", m_frame.frontFacesheetMm, m_numerics.particleSpacingMm);
+    if (m_frame.bumper) {
+        checkResolution(out, "front facesheet", m_frame.frontFacesheetMm,
+                        m_numerics.particleSpacingMm);
+    }
     checkResolution(out, "rear facesheet", m_frame.rearFacesheetMm, m_numerics.particleSpacingMm);
     const double footprint = coneFootprintMm(m_threat, m_frame);
     if (m_domainRadius.value < footprint) {

@@ -77,7 +77,8 @@ struct ThreatSpec {
     std::string material = "Al6061-T6";
 };
 
-/// The two facesheets and the space between them.
+/// The two facesheets and the space between them; or, without a bumper, a single wall (the
+/// rear facesheet alone, its front face at z = 0; front facesheet and core thickness 0).
 struct PanelFrame {
     double frontFacesheetMm = kMissing;               ///< t_f, the bumper
     double coreThicknessMm = kMissing;                ///< S, the standoff between the facesheets
@@ -85,6 +86,7 @@ struct PanelFrame {
     std::string facesheetMaterial = "Al6061-T6";      ///< the core's default material too
     std::string frontFacesheetMaterial = "Al6061-T6"; ///< the bumper
     std::string rearFacesheetMaterial = "Al6061-T6";  ///< the rear wall
+    bool bumper = true;                               ///< false: a single wall
 };
 
 /// Numerical choices; NaN (kMissing) domain radius or end time means "use the rule".
@@ -160,7 +162,7 @@ public:
     void addCoreBody(std::string name, std::string role, std::string material, double zFrontCoreMm,
                      double thicknessMm, double innerRadiusMm, double outerRadiusMm);
 
-    /// Projectile, bumper, core bodies in the order added, rear wall.
+    /// Projectile, bumper (none for a single wall), core bodies in the order added, rear wall.
     std::vector<SceneBody> bodies() const;
     /// The FE bodies as (z, r) rectangles at the FE element size (= the particle spacing).
     std::vector<MeshRectangle> feRectangles() const;

@@ -308,6 +308,35 @@ TEST(Foam2LayersCli, WritesAWhippleScene) {
     EXPECT_EQ(scene["summary"]["shield"], "whipple");
 }
 
+// A single wall is the rear wall alone, struck directly: projectile and wall, the wall's
+// front face at z = 0 (where a bumper's would be), graded as the rear wall.
+TEST(Foam2LayersCli, WritesASingleWallScene) {
+    const auto out = freshOutput("single_wall.scene.json");
+    const auto run = runTool(kTool,
+                             {"--panel-type", "single_wall", "--diameter-mm", "1",
+                              "--velocity-km-s", "3", "--facesheet-mm", "2.5",
+                              "--rear-facesheet-material", "Al2024-T3", "-o", out.string()},
+                             "single_wall");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json scene = readJson(out);
+    EXPECT_TRUE(validScene(scene));
+    ASSERT_EQ(scene["bodies"].size(), 2u);
+    EXPECT_TRUE(bodiesWithRole(scene, "bumper").empty());
+    const auto wall = bodiesWithRole(scene, "rear_wall");
+    ASSERT_EQ(wall.size(), 1u);
+    EXPECT_EQ(wall[0]["name"], "wall");
+    EXPECT_EQ(wall[0]["material"], "Al2024-T3");
+    EXPECT_EQ(wall[0]["shape"]["z_front_mm"].get<double>(), 0.0);
+    EXPECT_TRUE(near("wall thickness", wall[0]["shape"]["thickness_mm"].get<double>(), 2.5,
+                     1e-12, 0.0));
+    EXPECT_EQ(scene["summary"]["shield"], "single_wall");
+    // The domain rule's floor (5 d) and the end-time rule with L = spacing + wall.
+    EXPECT_EQ(scene["domain"]["radius_mm"].get<double>(), 5.0);
+    const double spacing = scene["sph"]["particle_spacing_mm"].get<double>();
+    EXPECT_EQ(scene["run"]["end_time_us"].get<double>(),
+              std::ceil(10.0 * (spacing + 2.5) / 3.0 + 10.0 - 1e-9));
+}
+
 TEST(Foam2LayersCli, AFoamPanelWithoutItsPpiIsRefusedWithAHint) {
     const auto out = freshOutput("foam_no_ppi.scene.json");
     const auto run =
@@ -473,7 +502,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"bad_facesheet_conflict.json", "/panel/facesheet_mm", "front_facesheet_mm"},
         BadFile{"bad_rear_facesheet_missing.json", "/panel/rear_facesheet_mm", "missing"},
         BadFile{"bad_material.json", "/panel/material", "Unobtainium"},
-        BadFile{"bad_whipple_with_ppi.json", "/panel/ppi", "Whipple shield"}),
+        BadFile{"bad_whipple_with_ppi.json", "/panel/ppi", "panel type whipple"},
+        BadFile{"bad_whipple_without_gap.json", "/panel/core_thickness_mm", "required key"},
+        BadFile{"bad_single_wall_with_bumper.json", "/panel/front_facesheet_mm", "no bumper"},
+        BadFile{"bad_single_wall_without_wall.json", "/panel/rear_facesheet_mm",
+                "single wall's thickness"}),
     [](const ::testing::TestParamInfo<BadFile>& param) {
         std::string name = param.param.fixture.substr(4);
         name = name.substr(0, name.size() - 5);

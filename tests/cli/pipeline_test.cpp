@@ -34,3 +34,53 @@ TEST(Pipeline, BleSizeToFoam2LayersToHviRun) {
     hvi::io::RunFileReader reader(run.string());
     EXPECT_EQ(reader.runFacts()["stop_reason"], "end_time");
 }
+
+// A Whipple and a single wall sized by ble-size become scenes without hand-written JSON: the
+// sizing's panel block carries the shield's plates, gap and materials to foam2layers.
+TEST(Pipeline, BleSizeWhippleAndSingleWallToFoam2Layers) {
+    struct Shield {
+        std::string tag;
+        std::string flags;
+        std::vector<std::pair<std::string, double>> plates; ///< role, thickness [mm]
+        double wallFrontMm;
+    };
+    const std::vector<Shield> shields = {
+        {"whipple",
+         "--type whipple --bumper-mm 0.64 --rear-wall-mm 0.41 --standoff-mm 60 "
+         "--rear-wall-material Al2024-T3",
+         {{"bumper", 0.64}, {"rear_wall", 0.41}},
+         60.64},
+        {"single_wall", "--type single_wall --thickness-mm 4 --material Al2024-T3",
+         {{"rear_wall", 4.0}},
+         0.0},
+    };
+    for (const auto& shield : shields) {
+        SCOPED_TRACE(shield.tag);
+        const auto sizing = tempPath("pipe_" + shield.tag + ".sizing.json");
+        const auto scene = tempPath("pipe_" + shield.tag + ".scene.json");
+        auto r = runTool("ble-size", "--diameter-mm 2 --velocity-km-s 6.37 " + shield.flags +
+                                         " -q -o " + sizing.string());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        r = runTool("foam2layers",
+                    sizing.string() + " -q --particle-spacing-mm 0.08 -o " + scene.string());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const auto doc = hvi::io::readJsonFile(scene.string());
+        EXPECT_NO_THROW(hvi::io::validateAgainstSchema(doc, "scene", scene.string()));
+        EXPECT_EQ(doc["summary"]["shield"], shield.tag);
+        std::size_t plates = 0;
+        for (const auto& body : doc["bodies"]) {
+            for (const auto& [role, thickness] : shield.plates) {
+                if (body["role"] == role) {
+                    ++plates;
+                    EXPECT_NEAR(body["shape"]["thickness_mm"].get<double>(), thickness, 1e-12);
+                }
+            }
+            if (body["role"] == "rear_wall") {
+                EXPECT_EQ(body["material"], "Al2024-T3");
+                EXPECT_NEAR(body["shape"]["z_front_mm"].get<double>(), shield.wallFrontMm, 1e-12);
+            }
+        }
+        EXPECT_EQ(plates, shield.plates.size());
+        EXPECT_EQ(doc["bodies"].size(), shield.plates.size() + 1); // + the projectile
+    }
+}
