@@ -330,6 +330,10 @@ std::optional<JohnsonCookDamage> readFailure(Section& s) {
                  {}, JohnsonCookDamage::kDefaultMaxTriaxiality);
     d.minFailureStrain = s.number("min_failure_strain", "floor of eps_f [-], > 0 (default 0.01)",
                                   above(0.0), JohnsonCookDamage::kDefaultMinFailureStrain);
+    d.compressionCutoff =
+        s.number("compression_cutoff_triaxiality",
+                 "sigma* below which no damage accumulates [-] (default -1/3, Bao-Wierzbicki)",
+                 {}, JohnsonCookDamage::kDefaultCompressionCutoff);
     if (d.maxTriaxiality <= d.minTriaxiality) {
         s.issue(s.pointerTo("triaxiality_max"),
                 "must exceed triaxiality_min (" + formatNumber(d.minTriaxiality) + "), got " +
@@ -338,6 +342,20 @@ std::optional<JohnsonCookDamage> readFailure(Section& s) {
     }
     s.rejectUnknownKeys();
     return d;
+}
+
+SpallStrength readSpall(Section& s) {
+    s.text("source", kSourceWhat);
+    SpallStrength spall;
+    spall.strengthGPa =
+        s.number("strength_GPa", "spall strength: mean tension at failure [GPa], > 0", above(0.0));
+    spall.rateExponent = s.number("rate_exponent", "power-law rate exponent n [-], >= 0 (default 0)",
+                                  atLeast(0.0), 0.0);
+    spall.referenceStrainRatePerUs = units::perSecondToPerMicrosecond(
+        s.number("reference_strain_rate_per_s",
+                 "strain rate of strength_GPa [1/s], > 0 (default 1)", above(0.0), 1.0));
+    s.rejectUnknownKeys();
+    return spall;
 }
 
 /// Reads one material entry into `spec`; problems go to `issues`.
@@ -372,8 +390,15 @@ void readMaterial(const json& entry, const std::string& name, const std::string&
         }
     });
 
+    const bool hasSpall = m.readSection("spall", "spall-strength object",
+                                        [&](Section& s) { spec.spall = readSpall(s); });
+
     if (!hasEos) {
         m.issue(m.pointerTo("eos"), "missing", "equation-of-state object");
+    }
+    if (hasSpall && !hasStrength) {
+        m.issue(m.pointerTo("strength"), "missing (required with a spall strength)",
+                "strength-model object: spall fails points of a solid");
     }
     // A strength model needs G for the elastic update and T_room/T_melt for T*; failure
     // accumulates the plastic strain that only a strength model produces.

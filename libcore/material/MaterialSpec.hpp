@@ -13,6 +13,7 @@
 #include "material/eos/MieGruneisen.hpp"
 #include "material/eos/Tillotson.hpp"
 #include "material/failure/JohnsonCookDamage.hpp"
+#include "material/failure/SpallStrength.hpp"
 #include "material/strength/JohnsonCook.hpp"
 
 #include <optional>
@@ -41,6 +42,8 @@ struct MaterialSpec {
     FailureModel failure;
     /// Shear modulus G [GPa]; > 0 whenever hasStrength(), else 0.
     double shearModulus = 0.0;
+    /// Tensile (spall) failure beside the failure model; applied to points with strength.
+    std::optional<SpallStrength> spall;
     /// Present whenever hasStrength() (JC thermal softening needs T*); optional otherwise.
     std::optional<ThermalParams> thermal;
     /// The material's JSON entry as read (with its source strings), for run provenance.

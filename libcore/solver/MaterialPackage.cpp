@@ -152,12 +152,14 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
                     [&](const auto& model) {
                         using F = std::decay_t<decltype(model)>;
                         if constexpr (!std::is_same_v<F, material::NoFailure>) {
-                            const double triax = model.triaxiality(ps.p[i], s.vonMises());
-                            const double epsF = model.failureStrain(triax, rate, tStar);
-                            ps.damage[i] = F::accumulate(ps.damage[i], dEps, epsF);
+                            ps.damage[i] = model.damageAfter(ps.damage[i], dEps, ps.p[i],
+                                                             s.vonMises(), rate, tStar);
                         }
                     },
                     spec.failure);
+            }
+            if (spec.spall && spec.spall->exceeded(s, ps.p[i], rate)) {
+                ps.damage[i] = 1.0;
             }
             if (ps.damage[i] >= 1.0) {
                 s = StressDeviator{};

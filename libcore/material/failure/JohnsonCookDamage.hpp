@@ -11,11 +11,19 @@
 // sign of sigma*; constants must not be moved between codes without checking which is used.
 // eps_dot* is floored at 1 and T* clamped to [0, 1], as in JohnsonCookStrength.
 //
-// Two documented limits (model choices, not from the 1985 paper):
+// Three documented limits (model choices, not from the 1985 paper):
+// * No damage accumulates below the compression cut-off triaxiality, default -1/3: Bao and
+//   Wierzbicki, "On the cut-off value of negative triaxiality for fracture", Eng. Fract.
+//   Mech. 72 (2005) 1049-1069, found no fracture below sigma* = -1/3 in upsetting tests of
+//   2024-T351, and many codes adopt the cut-off. Without it, shock-compressed material
+//   (sigma* -> the lower clamp) accumulates damage that the Taylor rods recovered whole do not
+//   show.
 // * sigma* is clamped to [minTriaxiality, maxTriaxiality], default [-1.5, 1.5] as in
 //   Uintah's JohnsonCookDamage. Above: a pure hydrostatic state has sigma_eq = 0 and
-//   sigma* = +-inf. Below: in a strong shock sigma* reaches -100s and exp(D3 sigma*)
-//   overflows; the clamp caps eps_f at its sigma* = -1.5 value (2.17 for Al 6061-T6).
+//   sigma* = +-inf; a material whose fit was calibrated to a lower triaxiality sets
+//   maxTriaxiality there, so eps_f is held at its last calibrated value and near-hydrostatic
+//   tension is left to the spall criterion (SpallStrength.hpp) instead of an extrapolated
+//   fit. Below: in a strong shock sigma* reaches -100s and exp(D3 sigma*) overflows.
 // * eps_f is floored at minFailureStrain, default 0.01. The Al 6061-T6 fit turns negative
 //   above sigma* = ln(-D1/D2)/D3 = 1.347 (spall triaxialities reach that), and a negative or
 //   zero eps_f would make D run backwards or divide by zero. 0.01 is below every value the fit
@@ -43,6 +51,7 @@ struct JohnsonCookDamage {
     static constexpr double kDefaultMinTriaxiality = -1.5;
     static constexpr double kDefaultMaxTriaxiality = 1.5;
     static constexpr double kDefaultMinFailureStrain = 0.01;
+    static constexpr double kDefaultCompressionCutoff = -1.0 / 3.0;
 
     double d1 = 0.0;
     double d2 = 0.0;
@@ -53,6 +62,7 @@ struct JohnsonCookDamage {
     double minTriaxiality = kDefaultMinTriaxiality;
     double maxTriaxiality = kDefaultMaxTriaxiality;
     double minFailureStrain = kDefaultMinFailureStrain; ///< > 0
+    double compressionCutoff = kDefaultCompressionCutoff; ///< no damage below this sigma*
 
     /// sigma* = -P / sigma_eq, clamped to [minTriaxiality, maxTriaxiality]. sigma_eq = 0
     /// gives the bound on the side of the mean stress (0 when P = 0 too).
@@ -81,6 +91,19 @@ struct JohnsonCookDamage {
                              double failureStrainValue) noexcept {
         const double d = damage + plasticStrainIncrement / failureStrainValue;
         return d > 1.0 ? 1.0 : d;
+    }
+
+    /// The damage after a plastic strain increment at pressure P and von Mises stress
+    /// sigma_eq [GPa]: unchanged below the compression cut-off, else accumulate().
+    double damageAfter(double damage, double plasticStrainIncrement, double pressure,
+                       double vonMises, double strainRatePerUs,
+                       double homologousTemperature) const noexcept {
+        const double sStar = triaxiality(pressure, vonMises);
+        if (sStar < compressionCutoff) {
+            return damage;
+        }
+        return accumulate(damage, plasticStrainIncrement,
+                          failureStrain(sStar, strainRatePerUs, homologousTemperature));
     }
 
     /// Failed material (D >= 1): no deviatoric stress, no tension (P floored at 0).

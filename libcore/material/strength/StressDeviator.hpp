@@ -33,6 +33,13 @@ struct StressDeviator {
         return 0.5 * (zz * zz + rr * rr + tt * tt) + rz * rz;
     }
 
+    /// The largest principal value of S [GPa]: of the in-plane pair and the hoop component.
+    double maxPrincipal() const noexcept {
+        const double mean = 0.5 * (zz + rr);
+        const double half = 0.5 * (zz - rr);
+        return std::fmax(mean + std::sqrt(half * half + rz * rz), thetaTheta());
+    }
+
     /// Von Mises equivalent stress sqrt(3 J2) [GPa].
     double vonMises() const noexcept { return std::sqrt(3.0 * secondInvariant()); }
 

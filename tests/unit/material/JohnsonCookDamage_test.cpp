@@ -110,3 +110,34 @@ TEST(JohnsonCookDamage, FailedMaterialCarriesNoShearAndNoTension) {
     EXPECT_EQ(s.zz, 0.2);
     EXPECT_EQ(p, -0.8);
 }
+
+// Bao & Wierzbicki's cut-off: no damage below sigma* = -1/3 (a compressive shock, uniaxial
+// compression beyond it), the same increment as accumulate() above it.
+TEST(JohnsonCookDamage, NoDamageBelowTheCompressionCutoff) {
+    EXPECT_EQ(kAl.compressionCutoff, -1.0 / 3.0);
+    // Just above the cut-off (sigma* = -0.333): damage accumulates.
+    const double aboveCutoff = kAl.damageAfter(0.0, 0.01, 0.0999, 0.3, kQuasiStatic, 0.0);
+    EXPECT_TRUE(near("D at sigma* = -0.333", aboveCutoff,
+                     0.01 / kAl.failureStrain(-0.333, kQuasiStatic, 0.0), 0.0, 1e-12));
+    // A shock: P = 10 GPa, sigma_eq = 0.3 GPa.
+    EXPECT_EQ(kAl.damageAfter(0.25, 0.05, 10.0, 0.3, kQuasiStatic, 0.0), 0.25);
+    // Just below the cut-off.
+    EXPECT_EQ(kAl.damageAfter(0.25, 0.05, 0.1001, 0.3, kQuasiStatic, 0.0), 0.25);
+    // Tension: the JC increment.
+    EXPECT_TRUE(near("D in tension", kAl.damageAfter(0.0, 0.01, -0.1, 0.3, kQuasiStatic, 0.0),
+                     0.01 / kAl.failureStrain(1.0 / 3.0, kQuasiStatic, 0.0), 0.0, 1e-12));
+}
+
+// With the upper clamp at the fit's calibrated end (sigma* = 1 for the 6061-T6 fit in the
+// library), eps_f beyond it stays at eps_f(1) = 0.136 instead of the 0.01 floor.
+TEST(JohnsonCookDamage, UpperClampHoldsTheLastCalibratedFailureStrain) {
+    JohnsonCookDamage al = kAl;
+    al.maxTriaxiality = 1.0;
+    const double atOne = -0.77 + 1.45 * std::exp(-0.47);
+    EXPECT_TRUE(near("eps_f(3) -> eps_f(1)",
+                     al.failureStrain(al.triaxiality(-0.9, 0.3), kQuasiStatic, 0.0), atOne, 0.0,
+                     1e-14));
+    EXPECT_TRUE(near("hydrostatic tension", al.failureStrain(al.triaxiality(-0.9, 0.0),
+                                                             kQuasiStatic, 0.0),
+                     atOne, 0.0, 1e-14));
+}

@@ -193,3 +193,35 @@ TEST(MaterialLibrary, UserLibraryLoadsAndMergesOverTheBuiltinOne) {
     EXPECT_FALSE(merged.get("Al6061-T6").hasStrength());
     EXPECT_TRUE(MaterialLibrary::builtin().get("Al6061-T6").hasStrength());
 }
+
+// Every aluminium has a spall strength, read in GPa; the 6061-T6 fit's damage stops at
+// sigma* = 1 and below the compression cut-off -1/3 (data/hydro_materials.json).
+TEST(MaterialLibrary, AluminiumSpallStrengthAndDamageRange) {
+    for (const auto& name : MaterialLibrary::builtin().names()) {
+        const MaterialSpec& m = MaterialLibrary::builtin().get(name);
+        if (name.rfind("Al", 0) == 0) {
+            ASSERT_TRUE(m.spall.has_value()) << name;
+            EXPECT_EQ(m.spall->strengthGPa, 2.0) << name;
+            EXPECT_EQ(m.spall->rateExponent, 0.0) << name;
+        }
+    }
+    const auto& d = std::get<JohnsonCookDamage>(MaterialLibrary::builtin().get("Al6061-T6").failure);
+    EXPECT_EQ(d.maxTriaxiality, 1.0);
+    EXPECT_EQ(d.compressionCutoff, -1.0 / 3.0);
+}
+
+TEST(MaterialLibrary, BadSpallStrengthIsReportedByPointer) {
+    nlohmann::json doc = readJson(hvi::test::dataPath("material/user_library.json"));
+    doc["materials"]["MyAl"]["spall"] = {{"strength_GPa", -1.2}, {"rate_exponent", 0.06},
+                                         {"source", "test"}};
+    std::string message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(message.find("doc: /materials/MyAl/spall/strength_GPa: must be > 0, got -1.2"),
+              std::string::npos)
+        << message;
+    doc["materials"]["MyAl"]["spall"] = {{"strength_GPa", 1.2}, {"source", "test"}};
+    doc["materials"]["MyAl"].erase("strength");
+    message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(message.find("/materials/MyAl/strength: missing (required with a spall strength)"),
+              std::string::npos)
+        << message;
+}

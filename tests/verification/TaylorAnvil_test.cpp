@@ -1,0 +1,194 @@
+// The Taylor anvil test (issue #24, item 1): a 6061-T6 rod strikes a rigid anvil at a few
+// hundred m/s, mushrooms, and is recovered whole. Two identical rods striking each other at
+// +-V are the rod on a rigid, frictionless anvil (the contact plane is a symmetry plane), so
+// the test needs no rigid-wall boundary. Data: House, Lewis, Gillis, Wilson, IJIE 16 (1995)
+// 189, rods 7.595 mm across and 11.39 mm long (L/D = 1.5), final length and foot diameter
+// as transcribed in the public HighRateExptData collection (TaylorData/MATLAB/
+// plot6061T6Al.m; not checked against the paper):
+//   227 m/s: L_f 10.2 mm, D_f 9.9 mm;   339 m/s: L_f 8.3 mm, D_f 12.8 mm.
+// What must hold: no point of a rod fails (damage 1) and none is eroded, in FE and in SPH,
+// at both speeds. The final shape is checked loosely (10 % on L_f and D_f): it measures the
+// Johnson-Cook strength constants (unchanged here), not the failure model under test, and
+// those constants are fitted at lower strain rates than a Taylor foot sees.
+#include "SceneRun.hpp"
+#include "Tolerance.hpp"
+#include "material/MaterialLibrary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <gtest/gtest.h>
+
+using namespace hvi;
+using nlohmann::json;
+
+namespace {
+
+constexpr double kDiameterMm = 7.595;
+constexpr double kLengthMm = 11.39;
+constexpr double kEndTimeUs = 40.0;
+
+double spacingOr(const char* env, double fallback) {
+    const char* value = std::getenv(env);
+    return value ? std::atof(value) : fallback;
+}
+
+json taylorScene(double speedKmS, const char* discretization, double spacing) {
+    auto rod = [&](const char* name, const char* role, double z0, double v) {
+        return json{{"name", name},
+                    {"role", role},
+                    {"material", "Al6061-T6"},
+                    {"discretization", discretization},
+                    {"shape", {{"type", "rectangle"}, {"z_min_mm", z0},
+                               {"z_max_mm", z0 + kLengthMm}, {"r_min_mm", 0.0},
+                               {"r_max_mm", 0.5 * kDiameterMm}}},
+                    {"velocity", {{"z_km_s", v}}}};
+    };
+    return {{"geometry", "axisymmetric"},
+            {"sph", {{"particle_spacing_mm", spacing}}},
+            {"fe", {{"element_size_mm", spacing}}},
+            {"run", {{"end_time_us", kEndTimeUs}, {"stop_debris_speed_km_s", 0.0},
+                     {"stop_no_new_penetration_us", 0.0},
+                     {"stop_on_rear_wall_perforation", false}}},
+            {"domain", {{"radius_mm", 30.0}}},
+            {"bodies", {rod("rod", "projectile", -kLengthMm - 0.5 * spacing, speedKmS),
+                        rod("anvil", "rear_wall", 0.5 * spacing, -speedKmS)}}};
+}
+
+struct RodShape {
+    double lengthMm = 0.0;
+    double footDiameterMm = 0.0;
+    std::size_t failed = 0;  ///< points of the rod with damage 1
+    std::size_t eroded = 0;  ///< FE elements of the rod eroded (SPH: points not alive)
+    std::size_t points = 0;
+};
+
+/// The rod (body 0): extent along z, largest radius, failed and eroded points.
+RodShape measure(const solver::Simulation& sim) {
+    RodShape out;
+    double zMin = 1e30, zMax = -1e30, rMax = 0.0;
+    auto extend = [&](double z, double r) {
+        zMin = std::min(zMin, z);
+        zMax = std::max(zMax, z);
+        rMax = std::max(rMax, r);
+    };
+    if (const fe::FeSolid* fe = sim.finiteElements(); fe && fe->elements().size() > 0) {
+        const auto& nd = fe->nodes();
+        for (std::size_t n = 0; n < nd.size(); ++n) {
+            if (nd.body[n] == 0) {
+                extend(nd.z[n], nd.r[n]);
+            }
+        }
+        const auto& el = fe->elements();
+        for (std::size_t i = 0; i < el.size(); ++i) {
+            if (el.body[i] != 0) {
+                continue;
+            }
+            ++out.points;
+            out.eroded += el.alive[i] ? 0 : 1;
+            out.failed += el.damage[i] >= 1.0 ? 1 : 0;
+            if (el.damage[i] >= 1.0 && std::getenv("TAYLOR_WHERE")) {
+                double z = 0.0, r = 0.0;
+                for (int a = 0; a < 4; ++a) {
+                    const auto n = static_cast<std::size_t>(el.node(i, a));
+                    z += 0.25 * nd.z[n];
+                    r += 0.25 * nd.r[n];
+                }
+                std::printf("failed element at z %.2f r %.2f\n", z, r);
+            }
+        }
+    } else {
+        const auto& ps = sim.particles();
+        const double h = sim.scene().sph.particleSpacing;
+        for (std::size_t i = 0; i < ps.size(); ++i) {
+            if (ps.body[i] != 0) {
+                continue;
+            }
+            ++out.points;
+            out.eroded += ps.alive[i] ? 0 : 1;
+            out.failed += ps.damage[i] >= 1.0 ? 1 : 0;
+            // A particle stands for a cell of one spacing: its outer edge is half a spacing out.
+            extend(ps.z[i] - 0.5 * h, ps.r[i] + 0.5 * h);
+            extend(ps.z[i] + 0.5 * h, ps.r[i] + 0.5 * h);
+        }
+    }
+    out.lengthMm = zMax - zMin;
+    out.footDiameterMm = 2.0 * rMax;
+    return out;
+}
+
+void expectWholeRod(double speedKmS, const char* discretization, double spacing,
+                    double lengthMm, double footMm) {
+    json doc = taylorScene(speedKmS, discretization, spacing);
+    if (std::getenv("TAYLOR_DROP")) { // diagnostics: drop "spall" or "failure"
+        json entry = json::parse(
+            material::MaterialLibrary::builtin().get("Al6061-T6").definitionJson);
+        entry.erase(std::getenv("TAYLOR_DROP"));
+        doc["materials"] = {{"AlT", entry}};
+        for (auto& b : doc["bodies"]) {
+            b["material"] = "AlT";
+        }
+    }
+    const auto scene = test::makeScene(doc);
+    solver::Simulation sim(scene, solver::sceneLibrary(doc.value("materials", json::object()),
+                                                       "<test>"));
+    double maxTension = 0.0, atR = 0.0, atZ = 0.0, atT = 0.0;
+    test::runUntil(sim, kEndTimeUs, [&](const solver::Simulation& s) {
+        const fe::FeSolid* fe = s.finiteElements();
+        if (!fe || fe->elements().size() == 0) {
+            return;
+        }
+        const auto& el = fe->elements();
+        for (std::size_t i = 0; i < el.size(); ++i) {
+            if (el.body[i] != 0 || !el.alive[i] || el.damage[i] >= 1.0) {
+                continue;
+            }
+            const material::StressDeviator dev{el.szz[i], el.srr[i], el.srz[i]};
+            const double t = dev.maxPrincipal() - el.p[i];
+            if (t > maxTension) {
+                maxTension = t;
+                atT = s.time();
+                const auto n = static_cast<std::size_t>(el.node(i, 0));
+                atR = fe->nodes().r[n];
+                atZ = fe->nodes().z[n];
+            }
+        }
+    });
+    std::printf("largest principal tension in the rod %.3f GPa at t %.2f us, z %.2f r %.2f mm\n",
+                maxTension, atT, atZ, atR);
+    const RodShape rod = measure(sim);
+    std::printf("Taylor %s %.0f m/s, spacing %.3f mm: L_f %.2f mm (test %.1f), D_f %.2f mm "
+                "(test %.1f); %zu of %zu points failed, %zu eroded; energy error %.2e\n",
+                discretization, speedKmS * 1000.0, spacing, rod.lengthMm, lengthMm,
+                rod.footDiameterMm, footMm, rod.failed, rod.points, rod.eroded,
+                sim.energyError());
+    EXPECT_EQ(rod.failed, 0u) << "the test's rods were recovered whole";
+    EXPECT_EQ(rod.eroded, 0u);
+    EXPECT_TRUE(test::near("L_f [mm]", rod.lengthMm, lengthMm, 0.0, 0.10));
+    EXPECT_TRUE(test::near("D_f [mm]", rod.footDiameterMm, footMm, 0.0, 0.10));
+}
+
+} // namespace
+
+// Spacing 0.2 mm (38 elements across): at 0.1 mm the same rod ends 9.96 mm long with a
+// 10.01 mm foot and nothing failed either.
+TEST(TaylorAnvil, FeRodAt227MetresPerSecondStaysWhole) {
+    expectWholeRod(0.227, "fe", spacingOr("TAYLOR_H", 0.2), 10.2, 9.9);
+}
+
+// Known failures, the open part of issue #24 (docs/notebook/spall-and-damage.md); run them with
+// --gtest_also_run_disabled_tests. At 339 m/s the FE rod's axis carries 2.4 GPa of tension
+// (above the 2.0 GPa spall strength) and Johnson-Cook damage fails its foot within 1 mm of the
+// anvil (eps_p beyond eps_f(0) = 0.68 in compressive shear, where the tension-calibrated fit
+// underestimates ductility). SPH rods fail at 227 m/s already: their axis tension exceeds
+// 2 GPa (the SPH axis treatment of item 2), and at 339 m/s their foot splashes to 15.8 mm.
+TEST(TaylorAnvil, DISABLED_FeRodAt339MetresPerSecondStaysWhole) {
+    expectWholeRod(0.339, "fe", spacingOr("TAYLOR_H", 0.2), 8.3, 12.8);
+}
+TEST(TaylorAnvil, DISABLED_SphRodAt227MetresPerSecondStaysWhole) {
+    expectWholeRod(0.227, "sph", spacingOr("TAYLOR_SPH_H", 0.2), 10.2, 9.9);
+}
+TEST(TaylorAnvil, DISABLED_SphRodAt339MetresPerSecondStaysWhole) {
+    expectWholeRod(0.339, "sph", spacingOr("TAYLOR_SPH_H", 0.2), 8.3, 12.8);
+}
