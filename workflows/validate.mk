@@ -18,6 +18,10 @@ ifeq ($(strip $(CASES)),)
 $(error hvi-validate listed no case for SET=$(SET): build the toolkit first (scripts/build.sh))
 endif
 END_TIME_FLAG := $(if $(END_TIME_US),--end-time-us $(END_TIME_US))
+# MATERIALS=FILE: a material library laid over the built-in one (hvi-run --materials), for
+# sensitivity studies; give such runs their own OUT.
+MATERIALS ?=
+MATERIALS_FLAG := $(if $(MATERIALS),--materials $(abspath $(MATERIALS)))
 
 .PHONY: validate validate-ble
 .SECONDARY:
@@ -51,7 +55,7 @@ $(OUT)/%/scene.json: $(OUT)/%/panel.json
 $(OUT)/%/run.h5: $(OUT)/%/scene.json
 	@set -e; start=$$(date +%s); part=$(OUT)/$*/run.part.h5; \
 	resume=$$([ -f $(OUT)/$*/run.part.ckpt.h5 ] && [ -f $$part ] && echo --resume || true); \
-	$(BIN)/hvi-run/hvi-run $< -o $$part --threads $(THREADS) -q $$resume; \
+	$(BIN)/hvi-run/hvi-run $< -o $$part --threads $(THREADS) $(MATERIALS_FLAG) -q $$resume; \
 	mv -f $$part $@; \
 	if [ -f $(OUT)/$*/run.part.xmf ]; then \
 	  sed 's/run\.part\.h5/run.h5/g' $(OUT)/$*/run.part.xmf > $(OUT)/$*/run.xmf; \
