@@ -46,8 +46,8 @@ json fromSizing(const json& sizing, const std::string& file, const PanelInputKin
                               sizing.contains(block) ? "is not an object"
                                                      : "missing from the ble-size sizing file",
                               std::string("the ") + block +
-                                  " block ble-size writes (a panel block for foam_sandwich, "
-                                  "honeycomb_sandwich, whipple and single_wall shields)"});
+                                  " block ble-size writes (it writes a panel block for "
+                                  "foam_sandwich, whipple and single_wall shields)"});
         }
     }
     if (!issues.empty()) {

@@ -10,6 +10,9 @@
 // at both speeds. The final shape is checked loosely (10 % on L_f and D_f): it measures the
 // Johnson-Cook strength constants (unchanged here), not the failure model under test, and
 // those constants are fitted at lower strain rates than a Taylor foot sees.
+// Diagnostics (docs/notebook/spall-and-damage.md): TAYLOR_H and TAYLOR_SPH_H set the spacing,
+// TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_WHERE=1 lists the
+// failed elements; each run prints the largest principal tension of the rod and where.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "material/MaterialLibrary.hpp"
