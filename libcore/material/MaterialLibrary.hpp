@@ -14,8 +14,11 @@
 //         "strength": { "type": "johnson_cook", "A_MPa", "B_MPa", "n", "C", "m",
 //                       "reference_strain_rate_per_s" (default 1), "source" },   optional
 //         "failure":  { "type": "johnson_cook", "D1".."D5", "reference_strain_rate_per_s",
-//                       "triaxiality_min", "triaxiality_max", "min_failure_strain"
-//                       (defaults in JohnsonCookDamage.hpp), "source" }      optional,
+//                       "triaxiality_min", "triaxiality_max", "min_failure_strain",
+//                       "compression_cutoff_triaxiality" (defaults in
+//                       JohnsonCookDamage.hpp), "source" }      optional, needs strength
+//         "spall":    { "strength_GPa", "rate_exponent" (default 0),
+//                       "reference_strain_rate_per_s" (default 1), "source" }  optional,
 //                                                                   needs strength
 //   } } }
 // EOS keys: mie_gruneisen: reference_density_g_cm3, c0_km_s, s, gamma0, b (default 0);
