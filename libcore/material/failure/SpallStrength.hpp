@@ -5,17 +5,19 @@
 // rate-dependent:
 //   sigma_sp(eps_dot) = sigma_sp0 max(1, eps_dot / eps_dot_0)^n
 // the power law aluminium spall strengths follow over plate-impact strain rates (exponent about
-// 0.06 for aluminium, Kanel, Razorenov et al.; notes section 3 of the axis-failure notes). It is
-// the "pressure cutoff" or "hydro tensile limit" criterion of the open and commercial codes
-// (a spall model beside Johnson-Cook damage, as Radioss pairs /FAIL/SPALLING with
-// /FAIL/JOHNSON): Johnson-Cook's fit describes ductile failure over the triaxialities it was
-// calibrated at, and is not extrapolated to the near-hydrostatic tension of a spall plane.
+// 0.06 for aluminium, Kanel, Razorenov et al.; notes section 3 of the axis-failure notes). It
+// plays the part of the "pressure cutoff" or "hydro tensile limit" of other codes (a spall
+// model beside Johnson-Cook damage, as Radioss pairs /FAIL/SPALLING with /FAIL/JOHNSON; those
+// cut off the mean tension, this one the principal stress, see below): Johnson-Cook's fit
+// describes ductile failure over the triaxialities it was calibrated at, and is not
+// extrapolated to the near-hydrostatic tension of a spall plane.
 //
 // The principal stress, not the mean tension, because that is what the datum measures: in a
 // plate-impact test (uniaxial strain) the free-surface velocity pulls back by du after its
-// peak, and 0.5 rho0 c0 du estimates the longitudinal stress at which the spall plane opened
-// (Kanel's acoustic approximation; tests/verification/SpallPlate_test.cpp). That stress exceeds
-// the mean tension by 2/3 of the yield stress of material yielding in tension.
+// peak, and 0.5 rho0 c du estimates the longitudinal stress at which the spall plane opened
+// (Kanel's acoustic approximation; tests/verification/SpallPlate_test.cpp uses the longitudinal
+// sound speed). That stress exceeds the mean tension by 2/3 of the yield stress of material
+// yielding in tension.
 //
 // Units: GPa; strain rates in 1/us.
 #pragma once
