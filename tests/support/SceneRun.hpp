@@ -1,6 +1,7 @@
 // Builds and runs small scenes in-process for the verification tests.
 #pragma once
 
+#include "fe/FeSolid.hpp"
 #include "scene/Scene.hpp"
 #include "solver/SceneLibrary.hpp"
 #include "solver/Simulation.hpp"
@@ -15,6 +16,22 @@ inline scene::Scene makeScene(const nlohmann::json& doc) {
     const auto library = solver::sceneLibrary(doc.value("materials", nlohmann::json::object()),
                                               "<test>");
     return scene::parseScene(doc, "<test>", library.names());
+}
+
+/// Mean of an FE element's four nodes: position [mm] and axial velocity [km/s].
+struct ElementCentroid {
+    double z = 0.0, r = 0.0, vz = 0.0;
+};
+
+inline ElementCentroid elementCentroid(const fe::FeSolid& fe, std::size_t element) {
+    ElementCentroid c;
+    for (int a = 0; a < 4; ++a) {
+        const auto n = static_cast<std::size_t>(fe.elements().node(element, a));
+        c.z += 0.25 * fe.nodes().z[n];
+        c.r += 0.25 * fe.nodes().r[n];
+        c.vz += 0.25 * fe.nodes().vz[n];
+    }
+    return c;
 }
 
 /// Runs until `until` [us] or a stop rule; calls `each` after every step if given.

@@ -40,21 +40,6 @@ json plateImpact(double speed, double size, double endTime, bool strength, doubl
             {"bodies", {body("flyer", -1.0, 0.0, speed), body("target", 0.0, 4.0, 0.0)}}};
 }
 
-struct Centroid {
-    double z = 0.0, r = 0.0, vz = 0.0;
-};
-
-Centroid centroidOf(const fe::FeSolid& fe, std::size_t i) {
-    Centroid c;
-    for (int a = 0; a < 4; ++a) {
-        const auto n = static_cast<std::size_t>(fe.elements().node(i, a));
-        c.z += 0.25 * fe.nodes().z[n];
-        c.r += 0.25 * fe.nodes().r[n];
-        c.vz += 0.25 * fe.nodes().vz[n];
-    }
-    return c;
-}
-
 void checkHugoniot(double v) {
     const double up = 0.5 * v;
     const double rho0 = 2.703, c0 = 5.24, s = 1.40;
@@ -68,7 +53,7 @@ void checkHugoniot(double v) {
     double uSum = 0.0, pSum = 0.0;
     int samples = 0;
     for (std::size_t i = 0; i < fe.elements().size(); ++i) {
-        const Centroid c = centroidOf(fe, i);
+        const test::ElementCentroid c = test::elementCentroid(fe, i);
         if (fe.elements().body[i] == 1 && c.z > up * t + 0.1 && c.z < front - 0.1 &&
             c.r > 1.5 && c.r < 2.5) {
             uSum += c.vz;

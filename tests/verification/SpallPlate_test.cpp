@@ -115,11 +115,7 @@ PullBack runSpall(double strengthGPa) {
         if (el.body[i] != 1 || el.damage[i] < 1.0) {
             continue;
         }
-        double r = 0.0;
-        for (int a = 0; a < 4; ++a) {
-            r += 0.25 * fe.nodes().r[static_cast<std::size_t>(fe.elements().node(i, a))];
-        }
-        out.spalled += std::fabs(r - kHalfWidthMm) < 1.0 ? 1 : 0;
+        out.spalled += std::fabs(test::elementCentroid(fe, i).r - kHalfWidthMm) < 1.0 ? 1 : 0;
     }
     return out;
 }

@@ -63,9 +63,62 @@ struct RodShape {
     double lengthMm = 0.0;
     double footDiameterMm = 0.0;
     std::size_t failed = 0;  ///< points of the rod with damage 1
-    std::size_t eroded = 0;  ///< FE elements of the rod eroded (SPH: points not alive)
+    std::size_t eroded = 0;  ///< points of the rod no longer alive
     std::size_t points = 0;
 };
+
+struct Position {
+    double z = 0.0, r = 0.0;
+};
+Position positionOf(const fe::FeSolid& fe, std::size_t i) {
+    const test::ElementCentroid c = test::elementCentroid(fe, i);
+    return {c.z, c.r};
+}
+Position positionOf(const sph::ParticleSet& ps, std::size_t i) { return {ps.z[i], ps.r[i]}; }
+const fe::ElementSet& pointsOf(const fe::FeSolid& fe) { return fe.elements(); }
+const sph::ParticleSet& pointsOf(const sph::ParticleSet& ps) { return ps; }
+
+/// Failed and eroded points of the rod (body 0) of an element or particle set.
+template <class Set>
+void countRod(const Set& set, RodShape& out) {
+    const auto& pts = pointsOf(set);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        if (pts.body[i] != 0) {
+            continue;
+        }
+        ++out.points;
+        out.eroded += pts.alive[i] ? 0 : 1;
+        out.failed += pts.damage[i] >= 1.0 ? 1 : 0;
+        if (pts.damage[i] >= 1.0 && std::getenv("TAYLOR_WHERE")) {
+            const Position at = positionOf(set, i);
+            std::printf("failed point at z %.2f r %.2f\n", at.z, at.r);
+        }
+    }
+}
+
+/// The largest principal tension of the rod's unfailed points.
+struct Tension {
+    double gpa = 0.0, timeUs = 0.0;
+    Position at;
+};
+template <class Set>
+void trackTension(const Set& set, double time, Tension& t) {
+    const auto& pts = pointsOf(set);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        if (pts.body[i] != 0 || !pts.alive[i] || pts.damage[i] >= 1.0) {
+            continue;
+        }
+        const material::StressDeviator dev{pts.szz[i], pts.srr[i], pts.srz[i]};
+        const double sigma1 = dev.maxPrincipal() - pts.p[i];
+        if (sigma1 > t.gpa) {
+            t = {sigma1, time, positionOf(set, i)};
+        }
+    }
+}
+
+bool feRod(const solver::Simulation& sim) {
+    return sim.finiteElements() && sim.finiteElements()->elements().size() > 0;
+}
 
 /// The rod (body 0): extent along z, largest radius, failed and eroded points.
 RodShape measure(const solver::Simulation& sim) {
@@ -76,45 +129,25 @@ RodShape measure(const solver::Simulation& sim) {
         zMax = std::max(zMax, z);
         rMax = std::max(rMax, r);
     };
-    if (const fe::FeSolid* fe = sim.finiteElements(); fe && fe->elements().size() > 0) {
-        const auto& nd = fe->nodes();
+    if (feRod(sim)) {
+        const auto& nd = sim.finiteElements()->nodes();
         for (std::size_t n = 0; n < nd.size(); ++n) {
             if (nd.body[n] == 0) {
                 extend(nd.z[n], nd.r[n]);
             }
         }
-        const auto& el = fe->elements();
-        for (std::size_t i = 0; i < el.size(); ++i) {
-            if (el.body[i] != 0) {
-                continue;
-            }
-            ++out.points;
-            out.eroded += el.alive[i] ? 0 : 1;
-            out.failed += el.damage[i] >= 1.0 ? 1 : 0;
-            if (el.damage[i] >= 1.0 && std::getenv("TAYLOR_WHERE")) {
-                double z = 0.0, r = 0.0;
-                for (int a = 0; a < 4; ++a) {
-                    const auto n = static_cast<std::size_t>(el.node(i, a));
-                    z += 0.25 * nd.z[n];
-                    r += 0.25 * nd.r[n];
-                }
-                std::printf("failed element at z %.2f r %.2f\n", z, r);
-            }
-        }
+        countRod(*sim.finiteElements(), out);
     } else {
         const auto& ps = sim.particles();
         const double h = sim.scene().sph.particleSpacing;
         for (std::size_t i = 0; i < ps.size(); ++i) {
-            if (ps.body[i] != 0) {
-                continue;
+            if (ps.body[i] == 0) {
+                // A particle stands for a cell of one spacing: its edge is half a spacing out.
+                extend(ps.z[i] - 0.5 * h, ps.r[i] + 0.5 * h);
+                extend(ps.z[i] + 0.5 * h, ps.r[i] + 0.5 * h);
             }
-            ++out.points;
-            out.eroded += ps.alive[i] ? 0 : 1;
-            out.failed += ps.damage[i] >= 1.0 ? 1 : 0;
-            // A particle stands for a cell of one spacing: its outer edge is half a spacing out.
-            extend(ps.z[i] - 0.5 * h, ps.r[i] + 0.5 * h);
-            extend(ps.z[i] + 0.5 * h, ps.r[i] + 0.5 * h);
         }
+        countRod(ps, out);
     }
     out.lengthMm = zMax - zMin;
     out.footDiameterMm = 2.0 * rMax;
@@ -136,30 +169,16 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
     const auto scene = test::makeScene(doc);
     solver::Simulation sim(scene, solver::sceneLibrary(doc.value("materials", json::object()),
                                                        "<test>"));
-    double maxTension = 0.0, atR = 0.0, atZ = 0.0, atT = 0.0;
+    Tension tension;
     test::runUntil(sim, kEndTimeUs, [&](const solver::Simulation& s) {
-        const fe::FeSolid* fe = s.finiteElements();
-        if (!fe || fe->elements().size() == 0) {
-            return;
-        }
-        const auto& el = fe->elements();
-        for (std::size_t i = 0; i < el.size(); ++i) {
-            if (el.body[i] != 0 || !el.alive[i] || el.damage[i] >= 1.0) {
-                continue;
-            }
-            const material::StressDeviator dev{el.szz[i], el.srr[i], el.srz[i]};
-            const double t = dev.maxPrincipal() - el.p[i];
-            if (t > maxTension) {
-                maxTension = t;
-                atT = s.time();
-                const auto n = static_cast<std::size_t>(el.node(i, 0));
-                atR = fe->nodes().r[n];
-                atZ = fe->nodes().z[n];
-            }
+        if (feRod(s)) {
+            trackTension(*s.finiteElements(), s.time(), tension);
+        } else {
+            trackTension(s.particles(), s.time(), tension);
         }
     });
     std::printf("largest principal tension in the rod %.3f GPa at t %.2f us, z %.2f r %.2f mm\n",
-                maxTension, atT, atZ, atR);
+                tension.gpa, tension.timeUs, tension.at.z, tension.at.r);
     const RodShape rod = measure(sim);
     std::printf("Taylor %s %.0f m/s, spacing %.3f mm: L_f %.2f mm (test %.1f), D_f %.2f mm "
                 "(test %.1f); %zu of %zu points failed, %zu eroded; energy error %.2e\n",
@@ -180,12 +199,10 @@ TEST(TaylorAnvil, FeRodAt227MetresPerSecondStaysWhole) {
     expectWholeRod(0.227, "fe", spacingOr("TAYLOR_H", 0.2), 10.2, 9.9);
 }
 
-// Known failures, the open part of issue #24 (docs/notebook/spall-and-damage.md); run them with
-// --gtest_also_run_disabled_tests. At 339 m/s the FE rod's axis carries 2.4 GPa of tension
-// (above the 2.0 GPa spall strength) and Johnson-Cook damage fails its foot within 1 mm of the
-// anvil (eps_p beyond eps_f(0) = 0.68 in compressive shear, where the tension-calibrated fit
-// underestimates ductility). SPH rods fail at 227 m/s already: their axis tension exceeds
-// 2 GPa (the SPH axis treatment of item 2), and at 339 m/s their foot splashes to 15.8 mm.
+// Known failures, the open part of issue #24; run them with --gtest_also_run_disabled_tests.
+// At 339 m/s the FE rod's axis tension exceeds the spall strength and Johnson-Cook damage fails
+// its foot in compressive shear; SPH rods fail on the axis at 227 m/s already. Measurements in
+// docs/notebook/spall-and-damage.md.
 TEST(TaylorAnvil, DISABLED_FeRodAt339MetresPerSecondStaysWhole) {
     expectWholeRod(0.339, "fe", spacingOr("TAYLOR_H", 0.2), 8.3, 12.8);
 }
