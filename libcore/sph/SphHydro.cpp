@@ -18,21 +18,11 @@ struct StepVote {
     int32_t particle = -1;
 };
 
-/// |dW/dz| of a pair without the divisions (grad W = kNorm f'(q)/q / h^4 x_ij, Kernel.hpp).
-template <class Shape>
-double axialGradientMagnitude(double dz, double dr, double hij) {
-    const double invH = 1.0 / hij;
-    const double invH2 = invH * invH;
-    const double q = std::sqrt(dz * dz + dr * dr) * invH;
-    return std::fabs(Shape::kNorm * Shape::shapeDerivOverQ(q) * invH2 * invH2 * dz);
-}
-
 /// `kArtificialStress`: the artificial-stress terms are compiled in (chosen once per scene, so
 /// the default path carries no per-pair test).
 template <class Kern, bool kArtificialStress>
 void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const HydroOptions& opt,
-                   const std::vector<PairData>& data, ParticleRates& rates, StepVote& vote,
-                   AxisFaceExcess& face) {
+                   const std::vector<PairData>& data, ParticleRates& rates, StepVote& vote) {
     using Shape = typename Kern::ShapeType;
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
@@ -76,7 +66,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             // The axial excess of the pair weights over the area weight A_j (header comment):
             double ownExcessZ = 0.0;  // sum (w_own - A) B_i,zz dW/dz, of the own stress
             double viscExcessZ = 0.0; // -sum (w_pair - A) Pi dW/dz, of the viscosity
-            double axialWeight = 0.0; // sum m_j |dW/dz|: how the excess is handed on
+            double workExcessZ = 0.0; // what the energy split adds to the axial work over it
             double viscHoop = 0.0;    // sum (w_pair - A) Pi grad_r W: the viscous hoop part
             double maxMu = 0.0;
             // Pass 1: keep the listed candidates inside the support (the list reaches a Verlet
@@ -178,7 +168,8 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                     if (mirrored) {
                         ownExcessZ += (wOwn - areaMass) * ozz * wz;
                         viscExcessZ -= (wPair - areaMass) * visc * wz;
-                        axialWeight += mj * std::fabs(wz);
+                        workExcessZ +=
+                            (halfExcess * (ozz - nzz) - 0.5 * (wPair - areaMass) * visc) * dvz * wz;
                     }
                 }
             }
@@ -232,18 +223,15 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                 // moment of the stress differences enters the force (docs/formulation.md).
                 ar += hoopR + hoopViscR;
                 de -= vri * (hoopR + hoopViscR);
-                // The axial excess at a z-face near the axis (header comment): taken off
-                // this particle here, handed to its neighbours by spreadFaceExcess.
-                // Only an awake particle hands its excess on: all its neighbours are then
-                // evaluated, so the receivers exist whether or not dormant particles are
-                // skipped. (One at rest and unstressed has only a viscous excess, from a
-                // neighbour closing in, and is awake from the next step on.)
-                const double excessZ = ownExcessZ + viscExcessZ;
-                if (mirrored && excessZ != 0.0 && axialWeight > 0.0 && isAwake(ps, i)) {
-                    az -= excessZ;
-                    face.excessZ[i] = excessZ;
-                    face.axialWeight[i] = axialWeight;
-                    face.givers[static_cast<std::size_t>(omp_get_thread_num())].list.push_back(i);
+                // Next to the axis the axial sums are the area-weighted ones (header
+                // comment): the own and viscous excess over them is taken off, and its work
+                // with it (the work split's remainder and the viscous work beyond A_j, both
+                // along z), so the particle heats as its row does. Only an awake
+                // particle: one at rest and unstressed can only have a viscous excess, from a
+                // neighbour closing in, and skipping dormant particles must not change it.
+                if (mirrored && isAwake(ps, i)) {
+                    az -= ownExcessZ + viscExcessZ;
+                    de += workExcessZ;
                 }
             }
             rates.az[i] += az;
@@ -297,102 +285,6 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             (v.dt < vote.dt || (v.dt == vote.dt && v.particle < vote.particle))) {
             vote = v;
         }
-    }
-}
-
-/// Hands each giver's removed axial excess m_i X_i to the neighbours inside its support in
-/// proportion to m_j |dW_ij/dz|, as pair forces (so z-momentum stays exact), and books the
-/// work of those pair forces on the pair's internal energies by mass (so energy stays exact).
-/// Gathered per receiver in ascending neighbour order: the sums do not depend on threads.
-template <class Kern>
-void spreadFaceExcess(const NeighbourList& list, const std::vector<PairData>& data,
-                      AxisFaceExcess& face, ParticleRates& rates) {
-    using Shape = typename Kern::ShapeType;
-    face.merged.clear();
-    for (auto& g : face.givers) {
-        face.merged.insert(face.merged.end(), g.list.begin(), g.list.end());
-        g.list.clear();
-    }
-    if (face.merged.empty()) {
-        return;
-    }
-    std::sort(face.merged.begin(), face.merged.end());
-    const auto rowOf = [&list](int32_t i) {
-        const auto it = std::lower_bound(list.listed.begin(), list.listed.end(), i);
-        if (it == list.listed.end() || *it != i) {
-            // Cannot happen: a giver is awake, so it and every particle within its listed
-            // reach are evaluated and have rows.
-            throw std::logic_error("SphHydro: an axis-face receiver has no neighbour row");
-        }
-        return static_cast<int32_t>(it - list.listed.begin());
-    };
-    const auto* src = list.source.data();
-    const auto* nb = list.neighbours.data();
-    face.receivers.clear();
-    const auto addReceiver = [&face](int32_t s) {
-        if (!face.isReceiver[static_cast<std::size_t>(s)]) {
-            face.isReceiver[static_cast<std::size_t>(s)] = 1;
-            face.receivers.push_back(s);
-        }
-    };
-    for (const int32_t i : face.merged) {
-        face.isGiver[static_cast<std::size_t>(i)] = 1;
-        addReceiver(i); // a giver books its side of the pair work in the gather
-        const int32_t row = rowOf(i);
-        for (int64_t k = list.offset[row]; k < list.offset[row + 1]; ++k) {
-            addReceiver(src[nb[k]]);
-        }
-    }
-    std::sort(face.receivers.begin(), face.receivers.end());
-    const PairData* pd = data.data();
-    const auto* sgn = list.sign.data();
-    const std::size_t receiverCount = face.receivers.size();
-#pragma omp parallel for schedule(dynamic, 32) if (receiverCount > kParallelMinHeavyItems)
-    for (std::size_t x = 0; x < receiverCount; ++x) {
-        const int32_t i = face.receivers[x];
-        const PairData& di = pd[i];
-        const bool giver = face.isGiver[static_cast<std::size_t>(i)] != 0;
-        const double giverShare = giver ? face.excessZ[i] / face.axialWeight[i] : 0.0;
-        double daz = 0.0, de = 0.0;
-        const int32_t row = rowOf(i);
-        for (int64_t k = list.offset[row]; k < list.offset[row + 1]; ++k) {
-            const int32_t j = nb[k];
-            const int32_t s = src[j];
-            const bool fromGiver = face.isGiver[static_cast<std::size_t>(s)] != 0;
-            if (!fromGiver && !giver) {
-                continue;
-            }
-            const PairData& dj = pd[s];
-            // The same support test as the pair loop, so the weights here are the ones the
-            // giver summed (the pair distance and h_ij are symmetric to the last bit).
-            const double dz = di.z - dj.z;
-            const double dr = di.r - sgn[j] * dj.r;
-            const double support = kKernelSupport * 0.5 * (di.h + dj.h);
-            if (dz * dz + dr * dr >= support * support) {
-                continue;
-            }
-            const double w = axialGradientMagnitude<Shape>(dz, dr, 0.5 * (di.h + dj.h));
-            // A pair force c on the receiver and -c on the giver, c = m_g X_g m_r w / S_g.
-            // Its power c (v_r - v_g) comes out of the pair's internal energy in proportion
-            // to mass, like the pair work of a uniform stress (the energy split above).
-            const double invPairMass = 1.0 / (di.mass + dj.mass);
-            if (fromGiver) { // i receives from s
-                const double perMass = dj.mass * face.excessZ[s] * w / face.axialWeight[s];
-                daz += perMass;
-                de -= perMass * di.mass * invPairMass * (di.vz - dj.vz);
-            }
-            if (giver) { // i gives to s
-                de -= giverShare * di.mass * dj.mass * w * invPairMass * (dj.vz - di.vz);
-            }
-        }
-        rates.az[i] += daz;
-        rates.de[i] += de;
-    }
-    for (const int32_t i : face.merged) {
-        face.isGiver[static_cast<std::size_t>(i)] = 0;
-    }
-    for (const int32_t i : face.receivers) {
-        face.isReceiver[static_cast<std::size_t>(i)] = 0;
     }
 }
 
@@ -450,23 +342,13 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, Partic
         d.areaMass = axi ? ps.mass[i] * inv2Pi / ps.r[i] : ps.mass[i];
         d.volume = d.areaMass / ps.rho[i];
     }
-    if (axi && m_face.isGiver.size() != n) {
-        m_face.excessZ.assign(n, 0.0);
-        m_face.axialWeight.assign(n, 0.0);
-        m_face.isGiver.assign(n, 0);
-        m_face.isReceiver.assign(n, 0);
-    }
-    m_face.givers.resize(static_cast<std::size_t>(omp_get_max_threads()));
     StepVote vote;
     withKernel(m_options.kernel, [&](auto kernel) {
         using Kern = decltype(kernel);
         if (m_options.artificialStress > 0.0) {
-            evaluatePairs<Kern, true>(ps, list, m_options, m_data, rates, vote, m_face);
+            evaluatePairs<Kern, true>(ps, list, m_options, m_data, rates, vote);
         } else {
-            evaluatePairs<Kern, false>(ps, list, m_options, m_data, rates, vote, m_face);
-        }
-        if (axi) {
-            spreadFaceExcess<Kern>(list, m_data, m_face, rates);
+            evaluatePairs<Kern, false>(ps, list, m_options, m_data, rates, vote);
         }
     });
     m_stableDt = vote.dt;

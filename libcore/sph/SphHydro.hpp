@@ -25,11 +25,17 @@
 //   area weights (docs/formulation.md, Energy):
 //     de_i/dt = -sum_j v_ij . (A_j B_i + (w_own,ij - A_j)(B_i - B_j)/2
 //                              - w_pair,ij Pi_ij/2 I) . grad W_ij  -  v_r,i hoop_i
-//   Axis faces (docs/formulation.md, The axis): a particle with a mirror among its neighbours
-//   takes off the axial excess of its own-stress and viscous sums over the area-weighted ones,
+//   Next to the axis (docs/formulation.md, The axis): a particle with a mirror among its
+//   neighbours takes off the axial excess of its own-stress and viscous sums over the
+//   area-weighted ones,
 //     X_i = sum_j [(w_own,ij - A_j) B_zz,i - (w_pair,ij - A_j) Pi_ij] dW_ij/dz,
-//   and hands m_i X_i to its neighbours in proportion to m_j |dW_ij/dz| as pair forces, their
-//   work booked on the pair by mass (z-momentum and energy stay exact).
+//   and the same excess of its axial work, so its axial force and heating are the
+//   area-weighted (planar) ones, as every pair term is in Spheral's RZ SPH: a flow that varies
+//   along z only stays the same at every radius (tests/verification/AxisFlyerPlate_test.cpp).
+//   X is zero on a lattice symmetric about r_i, so only those particles change. The price:
+//   their axial forces are not antisymmetric, so z-momentum is exact only away from the axis
+//   (drift 4.0e-4 of the impact momentum in tests/verification/Invariants_test.cpp's sphere),
+//   and energy is not exact either (5.6e-4 there).
 //   Planar mode: w_own = w_pair = A_j = m_j (mass per unit depth), no hoop term.
 // Artificial viscosity: Monaghan & Gingold (1983), Monaghan (1992) eq. 4.1:
 //   Pi_ij = (-alpha cbar mu + beta mu^2) / rhobar for approaching pairs,
@@ -84,21 +90,6 @@ struct alignas(64) PairData {
     double azz, arr, arz; ///< artificial stress R / rho^2 [GPa cm^6/g^2] (0 when off)
 };
 
-/// Scratch of the axis-face correction (file comment): the axial excess taken off the
-/// particles that have mirror images among their neighbours, to be handed to their neighbours.
-struct AxisFaceExcess {
-    std::vector<double> excessZ;     ///< per particle [km/s/us]; valid for givers
-    std::vector<double> axialWeight; ///< sum_j m_j |dW/dz| per giver
-    /// Per thread, filled by the pair loop; a cache line each, so the threads' appends do
-    /// not share one.
-    struct alignas(64) ThreadGivers {
-        std::vector<int32_t> list;
-    };
-    std::vector<ThreadGivers> givers;
-    std::vector<int32_t> merged, receivers;   ///< ascending
-    std::vector<uint8_t> isGiver, isReceiver; ///< per particle flags, zero between calls
-};
-
 class SphHydro {
 public:
     explicit SphHydro(HydroOptions options) : m_options(options) {}
@@ -127,7 +118,6 @@ private:
     double m_stableDt = 0.0;
     int32_t m_limitingParticle = -1;
     std::vector<PairData> m_data; ///< per particle, refreshed by every evaluate()
-    AxisFaceExcess m_face;
 };
 
 } // namespace hvi::sph

@@ -18,9 +18,9 @@ inline scene::Scene makeScene(const nlohmann::json& doc) {
     return scene::parseScene(doc, "<test>", library.names());
 }
 
-/// Mean of an FE element's four nodes: position [mm] and axial velocity [km/s].
+/// Mean of an FE element's four nodes: position [mm] and velocity [km/s].
 struct ElementCentroid {
-    double z = 0.0, r = 0.0, vz = 0.0;
+    double z = 0.0, r = 0.0, vz = 0.0, vr = 0.0;
 };
 
 inline ElementCentroid elementCentroid(const fe::FeSolid& fe, std::size_t element) {
@@ -30,6 +30,7 @@ inline ElementCentroid elementCentroid(const fe::FeSolid& fe, std::size_t elemen
         c.z += 0.25 * fe.nodes().z[n];
         c.r += 0.25 * fe.nodes().r[n];
         c.vz += 0.25 * fe.nodes().vz[n];
+        c.vr += 0.25 * fe.nodes().vr[n];
     }
     return c;
 }

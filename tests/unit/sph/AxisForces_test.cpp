@@ -116,16 +116,16 @@ TEST(AxisForces, PressurePulseAlongZHasNoRadialForce) {
 }
 
 TEST(AxisForces, CompatibleEnergyStaysExact) {
-    // The hoop terms' work is booked on the particle they act on, and each particle takes its
-    // own stress's share of the pair work (weight m_j / (2 pi r_i)), so kinetic plus internal
-    // energy rates cancel over the set. The radial velocity follows the pulse, v_r = r g(z)
-    // with g the pulse's shape, so the radial terms do work that does not sum away over the
-    // rows. Measured by breaking the code: the own share weighted like the viscosity
-    // (m_j (1/r_i + 1/r_j) / 4 pi) gives -1.0e-2 of the scale, the hoop force's work unbooked
-    // +0.17; booked, round-off.
+    // The hoop terms' work is booked on the particle they act on, and the pair work is split
+    // by area weights, so kinetic plus internal energy rates cancel over the set. The radial
+    // velocity follows the pulse, v_r = r g(z) with g the pulse's shape, so the radial terms do
+    // work that does not sum away over the rows. No axial motion: the axial excess taken off
+    // the particles next to the axis (unbooked by design, AxisExcessWorkStaysSmall) does no
+    // work. Measured by breaking the code: the hoop force's work unbooked gives +0.17 of the
+    // scale; booked, round-off.
     const double zMid = 0.5 * kRows * kSpacing;
     auto shape = [zMid](double z) { return std::exp(-std::pow((z - zMid) / 0.06, 2)); };
-    ParticleSet ps = lattice(2.0, 0.0, [&](double z) { return 10.0 * shape(z); });
+    ParticleSet ps = lattice(0.0, 0.0, [&](double z) { return 10.0 * shape(z); });
     for (std::size_t i = 0; i < ps.size(); ++i) {
         ps.vr[i] = ps.r[i] * shape(ps.z[i]);
     }
@@ -167,25 +167,28 @@ TEST(AxisForces, PressedFacePushesTheFirstColumnLikeTheRest) {
     // force weighs a neighbour m_j / (2 pi r_i); its z-face sum exceeds the area-weighted one
     // where mirror images sit among the neighbours (their mass grows with |r|, not with the
     // signed r), so the first column was pushed 1.26 times harder than its row (measured); at an
-    // SPH-FE contact face that column ran ahead into the FE axis node (docs/fe-erosion.md). The
-    // excess is handed to the neighbours, so the net force stays zero. Measured: 1.0055.
+    // SPH-FE contact face that column ran ahead into the FE axis node (docs/fe-erosion.md).
+    // The axial sums next to the axis are now the area-weighted ones, which a lattice mirrored
+    // at the axis makes the same in every column: equal to round-off (1.0055 when the excess
+    // was handed on to the neighbours). The net force is zero by the block's z-symmetry.
     const ParticleSet ps = lattice(0.0, 0.0, [](double) { return 10.0; });
     ParticleRates rates;
     hvi::test::evaluateAxisymmetric(ps, HydroOptions{}, rates);
     const FacePush f = facePush(ps, rates);
     EXPECT_LT(rates.az[0], -10.0) << "the face at z = 0 is pushed towards -z";
-    EXPECT_NEAR(f.firstColumnOverMedian, 1.0, 0.02);
+    EXPECT_NEAR(f.firstColumnOverMedian, 1.0, 1e-9);
     EXPECT_LT(std::fabs(f.netAxialForce), 1e-12 * f.axialForceScale)
         << "net axial force " << f.netAxialForce << " of " << f.axialForceScale;
 }
 
-TEST(AxisForces, FaceCorrectionKeepsEnergyExact) {
-    // The pair forces that hand the excess on do work when the pair's axial speeds differ
-    // (here a compression along z); it is booked on the pair's internal energies in
-    // proportion to mass. Unbooked: 8.8e-6 of the scale.
+TEST(AxisForces, AxisExcessWorkStaysSmall) {
+    // With axial motion (a compression along z of a block under 10 GPa, both faces free) the
+    // axial excess taken off the particles next to the axis does work that no energy term
+    // books (SphHydro.hpp): measured 1.7e-4 of the scale. Handed on to the neighbours as pair
+    // forces it was booked exactly, at the price of the first column's 1D consistency.
     ParticleSet ps = lattice(2.0, 0.0, [](double) { return 10.0; });
     const AxisForces f = evaluate(ps);
-    EXPECT_LT(std::fabs(f.energyRate), 1e-12 * f.energyScale)
+    EXPECT_LT(std::fabs(f.energyRate), 5e-4 * f.energyScale)
         << "energy rate " << f.energyRate << " of " << f.energyScale;
 }
 
