@@ -15,7 +15,8 @@
 // those constants are fitted at lower strain rates than a Taylor foot sees.
 // Diagnostics (docs/notebook/spall-and-damage.md): TAYLOR_H and TAYLOR_SPH_H set the spacing,
 // TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_WHERE=1 lists the
-// failed elements; each run prints the largest principal tension of the rod and where.
+// failed elements, TAYLOR_SPH_KERNEL and TAYLOR_SPH_HFAC set the SPH kernel and h / spacing;
+// each run prints the largest principal tension of the rod and where.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "material/MaterialLibrary.hpp"
@@ -178,6 +179,12 @@ RodShape measure(const solver::Simulation& sim) {
 void expectWholeRod(double speedKmS, const char* discretization, double spacing,
                     double lengthMm, double footMm, Anvil anvil) {
     json doc = taylorScene(speedKmS, discretization, spacing, anvil);
+    if (const char* kernel = std::getenv("TAYLOR_SPH_KERNEL")) {
+        doc["sph"]["kernel"] = kernel;
+    }
+    if (const char* factor = std::getenv("TAYLOR_SPH_HFAC")) {
+        doc["sph"]["smoothing_length_factor"] = std::atof(factor);
+    }
     if (std::getenv("TAYLOR_DROP")) { // diagnostics: drop "spall" or "failure"
         json entry = json::parse(
             material::MaterialLibrary::builtin().get("Al6061-T6").definitionJson);
