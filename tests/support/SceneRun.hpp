@@ -6,15 +6,22 @@
 #include "solver/SceneLibrary.hpp"
 #include "solver/Simulation.hpp"
 
+#include <cstdlib>
 #include <functional>
 #include <nlohmann/json.hpp>
 
 namespace hvi::test {
 
+/// A diagnostic override from the environment (a spacing, a size), or the test's value.
+inline double envOr(const char* name, double fallback) {
+    const char* value = std::getenv(name);
+    return value ? std::atof(value) : fallback;
+}
+
 /// Parses a scene document (validated like a file) with the built-in materials.
 inline scene::Scene makeScene(const nlohmann::json& doc) {
-    const auto library = solver::sceneLibrary(doc.value("materials", nlohmann::json::object()),
-                                              "<test>");
+    const auto library =
+        solver::sceneLibrary(doc.value("materials", nlohmann::json::object()), "<test>");
     return scene::parseScene(doc, "<test>", library.names());
 }
 

@@ -57,12 +57,8 @@ constexpr int kAxisColumns = 3;
 constexpr double kTolerance = 0.03;       // v_z, v_r, pressure, plastic strain
 constexpr double kStepTolerance = 0.0625; // damage, eroded: 2 of the 32 rows
 
-double spacing() {
-    const char* value = std::getenv("AXIS_H");
-    return value ? std::atof(value) : 0.05;
-}
-
-json flyerPlateScene(const char* flyer, const char* target, double speedKmS, double endUs) {
+json flyerPlateScene(const char* flyer, const char* target, double speedKmS, double endUs,
+                     double h) {
     auto plate = [&](const char* name, const char* role, const char* kind, double z0, double z1,
                      double v) {
         json b = {{"name", name},
@@ -81,8 +77,8 @@ json flyerPlateScene(const char* flyer, const char* target, double speedKmS, dou
         return b;
     };
     return {{"geometry", "axisymmetric"},
-            {"sph", {{"particle_spacing_mm", spacing()}}},
-            {"fe", {{"element_size_mm", spacing()}}},
+            {"sph", {{"particle_spacing_mm", h}}},
+            {"fe", {{"element_size_mm", h}}},
             {"run",
              {{"end_time_us", endUs},
               {"stop_debris_speed_km_s", 0.0},
@@ -275,8 +271,8 @@ void expectOneDimensional(const char* flyer, const char* target, double speedKmS
     if (only && std::fabs(std::atof(only) - speedKmS) > 1e-9) {
         return;
     }
-    const double h = spacing();
-    const json doc = flyerPlateScene(flyer, target, speedKmS, endUs);
+    const double h = test::envOr("AXIS_H", 0.05);
+    const json doc = flyerPlateScene(flyer, target, speedKmS, endUs, h);
     const auto scene = test::makeScene(doc);
     solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
     PointSet points;

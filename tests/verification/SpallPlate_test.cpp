@@ -26,12 +26,7 @@ constexpr double kTargetMm = 1.5;
 constexpr double kHalfWidthMm = 5.5; // edge release reaches the sampled band after 0.70 us
 constexpr double kEndUs = 0.6;       // the pull-back and the re-acceleration are over by 0.5 us
 constexpr double kElementMm = 0.025;
-constexpr double kSpeedKmS = 1.0;     // peak stress 8 GPa
-
-double elementSize() {
-    const char* value = std::getenv("SPALL_H");
-    return value ? std::atof(value) : kElementMm;
-}
+constexpr double kSpeedKmS = 1.0; // peak stress 8 GPa
 
 /// Al 6061-T6 of the library with its spall strength replaced (or removed when <= 0).
 json aluminiumWithSpall(double strengthGPa) {
@@ -53,8 +48,12 @@ json spallScene(double strengthGPa) {
                   {"material", "AlSpall"},
                   {"discretization", "fe"},
                   {"strength", true},
-                  {"shape", {{"type", "rectangle"}, {"z_min_mm", z0}, {"z_max_mm", z1},
-                             {"r_min_mm", 0.0}, {"r_max_mm", 2.0 * kHalfWidthMm}}}};
+                  {"shape",
+                   {{"type", "rectangle"},
+                    {"z_min_mm", z0},
+                    {"z_max_mm", z1},
+                    {"r_min_mm", 0.0},
+                    {"r_max_mm", 2.0 * kHalfWidthMm}}}};
         if (v != 0.0) {
             b["velocity"] = {{"z_km_s", v}};
         }
@@ -62,18 +61,20 @@ json spallScene(double strengthGPa) {
     };
     return {{"geometry", "planar"},
             {"materials", {{"AlSpall", aluminiumWithSpall(strengthGPa)}}},
-            {"fe", {{"element_size_mm", elementSize()}}},
-            {"run", {{"end_time_us", kEndUs}, {"stop_debris_speed_km_s", 0.0},
-                     {"stop_no_new_penetration_us", 0.0}}},
+            {"fe", {{"element_size_mm", test::envOr("SPALL_H", kElementMm)}}},
+            {"run",
+             {{"end_time_us", kEndUs},
+              {"stop_debris_speed_km_s", 0.0},
+              {"stop_no_new_penetration_us", 0.0}}},
             {"domain", {{"radius_mm", 50.0}}},
-            {"bodies", {body("flyer", -kFlyerMm, 0.0, kSpeedKmS),
-                        body("target", 0.0, kTargetMm, 0.0)}}};
+            {"bodies",
+             {body("flyer", -kFlyerMm, 0.0, kSpeedKmS), body("target", 0.0, kTargetMm, 0.0)}}};
 }
 
 struct PullBack {
-    double peak = 0.0;     ///< free-surface velocity plateau [km/s]
-    double minimum = 0.0;  ///< its minimum after the peak [km/s]
-    std::size_t spalled = 0; ///< target elements failed in the sampled centre band
+    double peak = 0.0;          ///< free-surface velocity plateau [km/s]
+    double minimum = 0.0;       ///< its minimum after the peak [km/s]
+    std::size_t spalled = 0;    ///< target elements failed in the sampled centre band
     double maxTensionGPa = 0.0; ///< largest principal stress of an unfailed target element
 };
 
@@ -150,8 +151,8 @@ PullBack expectSpall(double strengthGPa) {
 
 TEST(SpallPlate, PullBackReturnsTheSpallStrengthAt1p2GPa) {
     const PullBack p = expectSpall(1.2);
-    EXPECT_TRUE(test::near("spall strength from the pull-back [GPa]", acousticSpallStrength(p),
-                           1.2, 0.0, 0.10));
+    EXPECT_TRUE(test::near("spall strength from the pull-back [GPa]", acousticSpallStrength(p), 1.2,
+                           0.0, 0.10));
 }
 
 // At 0.8 and 2.0 GPa (the library's default) the criterion still holds the tension at its

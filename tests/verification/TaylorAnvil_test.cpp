@@ -36,11 +36,6 @@ constexpr double kDiameterMm = 7.595;
 constexpr double kLengthMm = 11.39;
 constexpr double kEndTimeUs = 40.0;
 
-double spacingOr(const char* env, double fallback) {
-    const char* value = std::getenv(env);
-    return value ? std::atof(value) : fallback;
-}
-
 /// The anvil: the rod's mirror image at -V (a rigid, frictionless anvil; FE rods), or a
 /// 4340 steel FE block at rest, as in the test (SPH rods: two SPH bodies pressed together are
 /// one continuum and would hold each other in tension as the rods rebound).
@@ -52,35 +47,44 @@ json taylorScene(double speedKmS, const char* discretization, double spacing, An
                     {"role", role},
                     {"material", "Al6061-T6"},
                     {"discretization", discretization},
-                    {"shape", {{"type", "rectangle"}, {"z_min_mm", z0},
-                               {"z_max_mm", z0 + kLengthMm}, {"r_min_mm", 0.0},
-                               {"r_max_mm", 0.5 * kDiameterMm}}},
+                    {"shape",
+                     {{"type", "rectangle"},
+                      {"z_min_mm", z0},
+                      {"z_max_mm", z0 + kLengthMm},
+                      {"r_min_mm", 0.0},
+                      {"r_max_mm", 0.5 * kDiameterMm}}},
                     {"velocity", {{"z_km_s", v}}}};
     };
     json steel = {{"name", "anvil"},
                   {"role", "rear_wall"},
                   {"material", "Steel4340"},
                   {"discretization", "fe"},
-                  {"shape", {{"type", "rectangle"}, {"z_min_mm", 0.0}, {"z_max_mm", 10.0},
-                             {"r_min_mm", 0.0}, {"r_max_mm", 15.0}}}};
-    return {{"geometry", "axisymmetric"},
-            {"sph", {{"particle_spacing_mm", spacing}}},
-            {"fe", {{"element_size_mm", spacing}}},
-            {"run", {{"end_time_us", kEndTimeUs}, {"stop_debris_speed_km_s", 0.0},
-                     {"stop_no_new_penetration_us", 0.0},
-                     {"stop_on_rear_wall_perforation", false}}},
-            {"domain", {{"radius_mm", 30.0}}},
-            {"bodies", {rod("rod", "projectile", -kLengthMm - 0.5 * spacing, speedKmS),
-                        anvil == Anvil::Mirror
-                            ? rod("anvil", "rear_wall", 0.5 * spacing, -speedKmS)
-                            : steel}}};
+                  {"shape",
+                   {{"type", "rectangle"},
+                    {"z_min_mm", 0.0},
+                    {"z_max_mm", 10.0},
+                    {"r_min_mm", 0.0},
+                    {"r_max_mm", 15.0}}}};
+    return {
+        {"geometry", "axisymmetric"},
+        {"sph", {{"particle_spacing_mm", spacing}}},
+        {"fe", {{"element_size_mm", spacing}}},
+        {"run",
+         {{"end_time_us", kEndTimeUs},
+          {"stop_debris_speed_km_s", 0.0},
+          {"stop_no_new_penetration_us", 0.0},
+          {"stop_on_rear_wall_perforation", false}}},
+        {"domain", {{"radius_mm", 30.0}}},
+        {"bodies",
+         {rod("rod", "projectile", -kLengthMm - 0.5 * spacing, speedKmS),
+          anvil == Anvil::Mirror ? rod("anvil", "rear_wall", 0.5 * spacing, -speedKmS) : steel}}};
 }
 
 struct RodShape {
     double lengthMm = 0.0;
     double footDiameterMm = 0.0;
-    std::size_t failed = 0;  ///< points of the rod with damage 1
-    std::size_t eroded = 0;  ///< points of the rod no longer alive
+    std::size_t failed = 0; ///< points of the rod with damage 1
+    std::size_t eroded = 0; ///< points of the rod no longer alive
     std::size_t points = 0;
 };
 
@@ -91,9 +95,15 @@ Position positionOf(const fe::FeSolid& fe, std::size_t i) {
     const test::ElementCentroid c = test::elementCentroid(fe, i);
     return {c.z, c.r};
 }
-Position positionOf(const sph::ParticleSet& ps, std::size_t i) { return {ps.z[i], ps.r[i]}; }
-const fe::ElementSet& pointsOf(const fe::FeSolid& fe) { return fe.elements(); }
-const sph::ParticleSet& pointsOf(const sph::ParticleSet& ps) { return ps; }
+Position positionOf(const sph::ParticleSet& ps, std::size_t i) {
+    return {ps.z[i], ps.r[i]};
+}
+const fe::ElementSet& pointsOf(const fe::FeSolid& fe) {
+    return fe.elements();
+}
+const sph::ParticleSet& pointsOf(const sph::ParticleSet& ps) {
+    return ps;
+}
 
 /// Failed and eroded points of the rod (body 0) of an element or particle set.
 template <class Set>
@@ -176,8 +186,8 @@ RodShape measure(const solver::Simulation& sim) {
     return out;
 }
 
-void expectWholeRod(double speedKmS, const char* discretization, double spacing,
-                    double lengthMm, double footMm, Anvil anvil) {
+void expectWholeRod(double speedKmS, const char* discretization, double spacing, double lengthMm,
+                    double footMm, Anvil anvil) {
     json doc = taylorScene(speedKmS, discretization, spacing, anvil);
     if (const char* kernel = std::getenv("TAYLOR_SPH_KERNEL")) {
         doc["sph"]["kernel"] = kernel;
@@ -186,8 +196,8 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
         doc["sph"]["smoothing_length_factor"] = std::atof(factor);
     }
     if (std::getenv("TAYLOR_DROP")) { // diagnostics: drop "spall" or "failure"
-        json entry = json::parse(
-            material::MaterialLibrary::builtin().get("Al6061-T6").definitionJson);
+        json entry =
+            json::parse(material::MaterialLibrary::builtin().get("Al6061-T6").definitionJson);
         entry.erase(std::getenv("TAYLOR_DROP"));
         doc["materials"] = {{"AlT", entry}};
         for (auto& b : doc["bodies"]) {
@@ -197,8 +207,8 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
         }
     }
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(doc.value("materials", json::object()),
-                                                       "<test>"));
+    solver::Simulation sim(scene,
+                           solver::sceneLibrary(doc.value("materials", json::object()), "<test>"));
     Tension tension;
     test::runUntil(sim, kEndTimeUs, [&](const solver::Simulation& s) {
         if (feRod(s)) {
@@ -213,8 +223,7 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
     std::printf("Taylor %s %.0f m/s, spacing %.3f mm: L_f %.2f mm (test %.1f), D_f %.2f mm "
                 "(test %.1f); %zu of %zu points failed, %zu eroded; energy error %.2e\n",
                 discretization, speedKmS * 1000.0, spacing, rod.lengthMm, lengthMm,
-                rod.footDiameterMm, footMm, rod.failed, rod.points, rod.eroded,
-                sim.energyError());
+                rod.footDiameterMm, footMm, rod.failed, rod.points, rod.eroded, sim.energyError());
     EXPECT_EQ(rod.failed, 0u) << "the test's rods were recovered whole";
     EXPECT_EQ(rod.eroded, 0u);
     EXPECT_TRUE(test::near("L_f [mm]", rod.lengthMm, lengthMm, 0.0, 0.10));
@@ -226,7 +235,7 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
 // Spacing 0.2 mm (38 elements across): at 0.1 mm the same rod ends 9.96 mm long with a
 // 10.01 mm foot and nothing failed either.
 TEST(TaylorAnvil, FeRodAt227MetresPerSecondStaysWhole) {
-    expectWholeRod(0.227, "fe", spacingOr("TAYLOR_H", 0.2), 10.2, 9.9, Anvil::Mirror);
+    expectWholeRod(0.227, "fe", test::envOr("TAYLOR_H", 0.2), 10.2, 9.9, Anvil::Mirror);
 }
 
 // Known failures, the open part of issue #24; run them with --gtest_also_run_disabled_tests.
@@ -235,11 +244,11 @@ TEST(TaylorAnvil, FeRodAt227MetresPerSecondStaysWhole) {
 // the anvil (2.0 GPa of tension at r = 0.15 mm), along the second column, and in a row 0.5 mm
 // from the anvil. Measurements in docs/notebook/spall-and-damage.md and docs/notebook/axis.md.
 TEST(TaylorAnvil, DISABLED_FeRodAt339MetresPerSecondStaysWhole) {
-    expectWholeRod(0.339, "fe", spacingOr("TAYLOR_H", 0.2), 8.3, 12.8, Anvil::Mirror);
+    expectWholeRod(0.339, "fe", test::envOr("TAYLOR_H", 0.2), 8.3, 12.8, Anvil::Mirror);
 }
 TEST(TaylorAnvil, DISABLED_SphRodAt227MetresPerSecondStaysWhole) {
-    expectWholeRod(0.227, "sph", spacingOr("TAYLOR_SPH_H", 0.2), 10.2, 9.9, Anvil::Steel);
+    expectWholeRod(0.227, "sph", test::envOr("TAYLOR_SPH_H", 0.2), 10.2, 9.9, Anvil::Steel);
 }
 TEST(TaylorAnvil, DISABLED_SphRodAt339MetresPerSecondStaysWhole) {
-    expectWholeRod(0.339, "sph", spacingOr("TAYLOR_SPH_H", 0.2), 8.3, 12.8, Anvil::Steel);
+    expectWholeRod(0.339, "sph", test::envOr("TAYLOR_SPH_H", 0.2), 8.3, 12.8, Anvil::Steel);
 }
