@@ -7,7 +7,6 @@
 #include <cmath>
 #include <limits>
 #include <omp.h>
-#include <stdexcept>
 
 namespace hvi::sph {
 

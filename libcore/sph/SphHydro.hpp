@@ -33,9 +33,8 @@
 //   area-weighted (planar) ones, as every pair term is in Spheral's RZ SPH: a flow that varies
 //   along z only stays the same at every radius (tests/verification/AxisFlyerPlate_test.cpp).
 //   X is zero on a lattice symmetric about r_i, so only those particles change. The price:
-//   their axial forces are not antisymmetric, so z-momentum is exact only away from the axis
-//   (drift 4.0e-4 of the impact momentum in tests/verification/Invariants_test.cpp's sphere),
-//   and energy is not exact either (5.6e-4 there).
+//   their axial forces are not antisymmetric, so z-momentum is exact only away from the axis,
+//   and energy is not exact either (measured drifts: docs/notebook/axis.md).
 //   Planar mode: w_own = w_pair = A_j = m_j (mass per unit depth), no hoop term.
 // Artificial viscosity: Monaghan & Gingold (1983), Monaghan (1992) eq. 4.1:
 //   Pi_ij = (-alpha cbar mu + beta mu^2) / rhobar for approaching pairs,
