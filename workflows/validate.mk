@@ -45,22 +45,4 @@ $(OUT)/%/panel.json:
 $(OUT)/%/ble.json: $(OUT)/%/panel.json
 	$(BIN)/ble-size/ble-size $(OUT)/$*/constraints.json -o $@ 2>$(OUT)/$*/ble.log
 
-$(OUT)/%/scene.json: $(OUT)/%/panel.json
-	w=$$(cat $(OUT)/$*/writer); $(BIN)/$$w/$$w $< --particle-spacing-mm $(RESOLUTION) \
-	  $(END_TIME_FLAG) -o $@ 2>$(OUT)/$*/scene.log
-
-# The run writes run.part.h5, renamed to run.h5 once complete: an interrupted run leaves
-# run.part.h5 and its checkpoint (make deletes only the target), and the next make resumes
-# it with the history it already has, rather than restarting.
-$(OUT)/%/run.h5: $(OUT)/%/scene.json
-	@set -e; start=$$(date +%s); part=$(OUT)/$*/run.part.h5; \
-	resume=$$([ -f $(OUT)/$*/run.part.ckpt.h5 ] && [ -f $$part ] && echo --resume || true); \
-	$(BIN)/hvi-run/hvi-run $< -o $$part --threads $(THREADS) $(MATERIALS_FLAG) -q $$resume; \
-	mv -f $$part $@; \
-	if [ -f $(OUT)/$*/run.part.xmf ]; then \
-	  sed 's/run\.part\.h5/run.h5/g' $(OUT)/$*/run.part.xmf > $(OUT)/$*/run.xmf; \
-	  rm -f $(OUT)/$*/run.part.xmf; fi; \
-	echo "validate: $* run in $$(( $$(date +%s) - start )) s"
-
-$(OUT)/%/verdict.json: $(OUT)/%/run.h5
-	$(BIN)/hvi-assess/hvi-assess $< -o $@ -q 2>$(OUT)/$*/assess.log
+include $(ROOT)/workflows/run-rules.mk

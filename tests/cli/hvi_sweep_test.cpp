@@ -1,0 +1,153 @@
+// hvi-sweep and the sweep workflow. The search's start is checked against ble-size itself (the
+// equation's wall for the case's projectile must give that projectile as its critical
+// diameter); the Makefile's loop, its result files and its resumption are checked with a
+// stand-in solver (hvi-run and hvi-assess replaced by scripts whose verdict flips at a known
+// wall thickness), so the test takes seconds; the hydrocode's own sweeps are in the docs.
+#include "RunTool.hpp"
+#include "TestPaths.hpp"
+#include "io/JsonInput.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+
+using namespace hvi::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+int countLines(const fs::path& path) {
+    std::ifstream in(path);
+    int n = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++n;
+    }
+    return n;
+}
+
+/// A BIN directory with the real scene writer and hvi-sweep, and a solver whose verdict is P
+/// for rear walls thinner than 0.8 mm per km/s of impact speed. Each stand-in run appends a
+/// line to runs.log.
+fs::path standInBin(const fs::path& dir) {
+    fs::remove_all(dir);
+    for (const char* tool : {"foam2layers", "hvi-sweep"}) {
+        fs::create_directories(dir / tool);
+        fs::create_symlink(toolPath(tool), dir / tool / tool);
+    }
+    fs::create_directories(dir / "hvi-run");
+    fs::create_directories(dir / "hvi-assess");
+    const fs::path run = dir / "hvi-run" / "hvi-run";
+    const fs::path assess = dir / "hvi-assess" / "hvi-assess";
+    // hvi-run SCENE -o OUT ...: copies the scene as the "run file".
+    std::ofstream(run) << "#!/bin/sh\necho \"$1\" >> " << (dir / "runs.log").string()
+                       << "\ncp \"$1\" \"$3\"\n";
+    // hvi-assess RUN -o OUT: P when t_rear < 0.8 V (both read from the scene).
+    std::ofstream(assess)
+        << "#!/bin/sh\n"
+           "t=$(grep -o '\"thickness_mm\": *[0-9.]*' \"$1\" | tail -1 | sed 's/.*: *//')\n"
+           "v=$(grep -o '\"z_km_s\": *[0-9.]*' \"$1\" | head -1 | sed 's/.*: *//')\n"
+           "p=$(awk -v t=\"$t\" -v v=\"$v\" 'BEGIN { print (t < 0.8 * v) ? \"P\" : \"NP\" }')\n"
+           "printf '{\"verdict\": \"%s\", \"verdict_final\": true}\\n' \"$p\" > \"$3\"\n";
+    fs::permissions(run, fs::perms::owner_all, fs::perm_options::add);
+    fs::permissions(assess, fs::perms::owner_all, fs::perm_options::add);
+    return dir;
+}
+
+int runMake(const fs::path& bin, const fs::path& out, const std::string& speeds) {
+    const std::string command = "make -s -C " + sourcePath("workflows").string() +
+                                " -f sweep.mk sweep CASE=WPL-0341 PARAMETER=rear_wall SPEEDS='" +
+                                speeds + "' TOLERANCE_MM=0.2 RESOLUTION=0.2 BIN=" + bin.string() +
+                                " OUT=" + out.string() + " >>" + out.string() + ".log 2>&1";
+    return std::system(command.c_str());
+}
+
+} // namespace
+
+TEST(HviSweepCli, StartsAtTheWallTheEquationNeeds) {
+    const fs::path dir = tempPath("sweep_init/v6.52");
+    fs::remove_all(dir.parent_path());
+    const auto r = runTool("hvi-sweep", "init --case WPL-0341 --parameter rear_wall "
+                                        "--speed-km-s 6.52 --out-dir " +
+                                            dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto spec = hvi::io::readJsonFile((dir / "sweep.json").string());
+    const double wall = spec["search"]["guess_mm"];
+    EXPECT_EQ(spec["search"]["guess_source"], "ballistic limit equation");
+    // ble-size with that wall: the case's 3.18 mm sphere is the critical diameter.
+    const auto ble =
+        runTool("ble-size", "--type whipple --diameter-mm 3.18 --velocity-km-s "
+                            "6.52 --bumper-mm 0.84 --standoff-mm 12.7 "
+                            "--rear-wall-mm " +
+                                std::to_string(wall) + " --projectile-density-g-cm3 2.8 -o -");
+    ASSERT_EQ(ble.exitCode, 0) << ble.err;
+    const auto sizing = nlohmann::json::parse(ble.out);
+    EXPECT_NEAR(sizing["performance"]["critical_diameter_mm"].get<double>(), 3.18, 2e-3)
+        << "wall " << wall;
+}
+
+TEST(HviSweepCli, RefusesAMissingShieldAndAnotherSweepInTheSameDirectory) {
+    const fs::path dir = tempPath("sweep_refuse/v7");
+    fs::remove_all(dir.parent_path());
+    const auto none = runTool("hvi-sweep", "init --speed-km-s 7 --out-dir " + dir.string());
+    EXPECT_EQ(none.exitCode, 2);
+    EXPECT_NE(none.err.find("no shield given"), std::string::npos) << none.err;
+    EXPECT_FALSE(fs::exists(dir / "sweep.json"));
+    const std::string base = "init --case WPL-0341 --speed-km-s 7 --out-dir " + dir.string();
+    ASSERT_EQ(runTool("hvi-sweep", base).exitCode, 0);
+    EXPECT_EQ(runTool("hvi-sweep", base).exitCode, 0); // the same sweep again: fine
+    const auto other = runTool("hvi-sweep", base + " --tolerance-mm 0.3");
+    EXPECT_EQ(other.exitCode, 2);
+    EXPECT_NE(other.err.find("holds another sweep"), std::string::npos) << other.err;
+    const auto nan = runTool("hvi-sweep", base + " --tolerance-mm nan");
+    EXPECT_EQ(nan.exitCode, 2) << nan.err;
+    const auto next = runTool("hvi-sweep", "next " + tempPath("sweep_refuse/none").string());
+    EXPECT_EQ(next.exitCode, 2) << next.err;
+}
+
+TEST(HviSweepWorkflow, BracketsTheStandInLimitAndResumes) {
+    const fs::path root = tempPath("sweep_make");
+    fs::remove_all(root);
+    const fs::path bin = standInBin(root / "bin");
+    const fs::path out = root / "out";
+    ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readText(out.string() + ".log");
+    const std::string csv = readText(out / "sweep.csv");
+    EXPECT_TRUE(fs::exists(out / "sweep.svg"));
+    for (const double v : {6.0, 7.0}) {
+        const auto c = hvi::io::readJsonFile(
+            (out / ("v" + std::to_string(static_cast<int>(v))) / "critical.json").string());
+        ASSERT_EQ(c["state"], "converged") << c.dump(1);
+        const double limit = 0.8 * v;
+        EXPECT_LT(c["fail_side_mm"].get<double>(), limit) << c.dump(1);
+        EXPECT_GE(c["hold_side_mm"].get<double>(), limit) << c.dump(1);
+        EXPECT_LE(c["hold_side_mm"].get<double>() - c["fail_side_mm"].get<double>(), 0.2);
+        EXPECT_NE(csv.find(std::to_string(static_cast<int>(v)) + ",rear_wall,converged,"),
+                  std::string::npos)
+            << csv;
+    }
+    // Take back one speed's result and the run at its NP end: the next make runs that one
+    // point again, and only that one.
+    const int runsBefore = countLines(bin / "runs.log");
+    const auto c7 = hvi::io::readJsonFile((out / "v7" / "critical.json").string());
+    std::string last;
+    for (const auto& run : c7["runs"]) {
+        if (run["value_mm"] == c7["hold_side_mm"]) {
+            last = run["run"];
+        }
+    }
+    ASSERT_FALSE(last.empty()) << c7.dump(1);
+    fs::remove(out / "v7" / "critical.json");
+    fs::remove(out / "v7" / "points" / last / "verdict.json");
+    fs::remove(out / "v7" / "points" / last / "run.h5");
+    ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readText(out.string() + ".log");
+    EXPECT_EQ(countLines(bin / "runs.log"), runsBefore + 1);
+    EXPECT_EQ(hvi::io::readJsonFile((out / "v7" / "critical.json").string()), c7);
+}

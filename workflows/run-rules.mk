@@ -1,0 +1,25 @@
+# The three steps every case directory goes through, shared by validate.mk and sweep.mk:
+#   DIR/panel.json + DIR/writer -> DIR/scene.json -> DIR/run.h5 -> DIR/verdict.json
+# under $(OUT). Set before including: OUT, BIN, RESOLUTION, THREADS; optional END_TIME_FLAG,
+# MATERIALS_FLAG, and LAUNCH (a command put in front of every hvi-run, e.g. 'srun -n1 -c8').
+LAUNCH ?=
+
+$(OUT)/%/scene.json: $(OUT)/%/panel.json
+	w=$$(cat $(OUT)/$*/writer); $(BIN)/$$w/$$w $< --particle-spacing-mm $(RESOLUTION) \
+	  $(END_TIME_FLAG) -o $@ 2>$(OUT)/$*/scene.log
+
+# The run writes run.part.h5, renamed to run.h5 once complete: an interrupted run leaves
+# run.part.h5 and its checkpoint (make deletes only the target), and the next make resumes
+# it with the history it already has, rather than restarting.
+$(OUT)/%/run.h5: $(OUT)/%/scene.json
+	@set -e; start=$$(date +%s); part=$(OUT)/$*/run.part.h5; \
+	resume=$$([ -f $(OUT)/$*/run.part.ckpt.h5 ] && [ -f $$part ] && echo --resume || true); \
+	$(LAUNCH) $(BIN)/hvi-run/hvi-run $< -o $$part --threads $(THREADS) $(MATERIALS_FLAG) -q $$resume; \
+	mv -f $$part $@; \
+	if [ -f $(OUT)/$*/run.part.xmf ]; then \
+	  sed 's/run\.part\.h5/run.h5/g' $(OUT)/$*/run.part.xmf > $(OUT)/$*/run.xmf; \
+	  rm -f $(OUT)/$*/run.part.xmf; fi; \
+	echo "$*: run in $$(( $$(date +%s) - start )) s"
+
+$(OUT)/%/verdict.json: $(OUT)/%/run.h5
+	$(BIN)/hvi-assess/hvi-assess $< -o $@ -q 2>$(OUT)/$*/assess.log
