@@ -7,7 +7,6 @@
 #include "io/JsonInput.hpp"
 #include "plot/XyPlot.hpp"
 
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -33,8 +32,9 @@ void BleSizeTool::addOptions(CLI::App& app) {
                    "velocity_km_s, projectile_diameter_mm and expected.pnp (the format of the "
                    "source study's validation file)")
         ->check(CLI::ExistingFile);
-    app.add_option("--mode", m_mode, "performance (d_c of the given shield) or design "
-                                     "(thicknesses for the threat)")
+    app.add_option("--mode", m_mode,
+                   "performance (d_c of the given shield) or design "
+                   "(thicknesses for the threat)")
         ->check(CLI::IsMember({"performance", "design"}));
     app.add_option("--type", m_type, "Shield type")
         ->check(CLI::IsMember(
@@ -77,11 +77,12 @@ void BleSizeTool::addOptions(CLI::App& app) {
          "Ballistic limit curve: highest speed [km/s] (default 15)"},
     };
     for (const auto& f : flags) {
-        m_numberOptions[f.pointer] =
+        CLI::Option* option =
             app.add_option_function<double>(
                    f.flag, [this, p = std::string(f.pointer)](double v) { m_numbers[p] = v; },
                    f.help)
                 ->type_name("NUM");
+        flagSetsPointer(option, f.pointer);
     }
     struct StringFlag {
         const char* flag;
@@ -97,7 +98,8 @@ void BleSizeTool::addOptions(CLI::App& app) {
     };
     for (const auto& f : stringFlags) {
         app.add_option_function<std::string>(
-               f.flag, [this, p = std::string(f.pointer)](const std::string& v) { m_strings[p] = v; },
+               f.flag,
+               [this, p = std::string(f.pointer)](const std::string& v) { m_strings[p] = v; },
                std::string(f.help) + " (--list-materials)")
             ->type_name("NAME");
     }
@@ -172,15 +174,8 @@ void BleSizeTool::execute() {
     if (!doc.is_object()) {
         throw InputError(label, "", "is not a JSON object", "{\"threat\": ..., \"shield\": ...}");
     }
-    std::vector<InputIssue> flagIssues;
     for (const auto& [pointer, value] : m_numbers) {
-        if (!std::isfinite(value)) {
-            flagIssues.push_back({"<flags>", pointer, "is not a finite number", "a finite value"});
-        }
         doc[json::json_pointer(pointer)] = value;
-    }
-    if (!flagIssues.empty()) {
-        throw InputError(flagIssues);
     }
     for (const auto& [pointer, value] : m_strings) {
         doc[json::json_pointer(pointer)] = value;

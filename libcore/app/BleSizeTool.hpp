@@ -30,7 +30,6 @@ private:
     /// Flag values by JSON pointer into the constraints document (set only when given).
     std::map<std::string, double> m_numbers;
     std::map<std::string, std::string> m_strings;
-    std::map<std::string, CLI::Option*> m_numberOptions;
 };
 
 } // namespace hvi::app

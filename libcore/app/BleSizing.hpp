@@ -14,16 +14,17 @@
 namespace hvi::app {
 
 struct BleSizingOutcome {
-    nlohmann::json sizing;               ///< the sizing document, without provenance
-    ble::BallisticLimitCurve curve;      ///< d_c(V) for the (given or designed) shield
-    bool hasCurve = false;               ///< false when the shield is not fully defined
-    std::string curveLabel;              ///< e.g. "Whipple NNO, t_b 2.03 mm, ..."
+    nlohmann::json sizing;          ///< the sizing document, without provenance
+    ble::BallisticLimitCurve curve; ///< d_c(V) for the (given or designed) shield
+    bool hasCurve = false;          ///< false when the shield is not fully defined
+    std::string curveLabel;         ///< e.g. "Whipple NNO, t_b 2.03 mm, ..."
     std::vector<ble::ValidityWarning> warnings;
 };
 
 /// Computes everything. `file` names the input in error messages. Throws InputError for
 /// semantic problems the schema cannot see (unknown material, missing thickness in
-/// performance mode, both yield units given), each with its JSON pointer.
+/// performance mode, both yield units given), each with its JSON pointer; RuntimeFailure
+/// when a result is NaN or infinite (it names the result).
 BleSizingOutcome computeSizing(const nlohmann::json& resolved, const std::string& file);
 
 } // namespace hvi::app

@@ -2,8 +2,6 @@
 
 #include "core/Error.hpp"
 
-#include <cmath>
-
 namespace hvi::app {
 
 using nlohmann::json;
@@ -54,19 +52,14 @@ std::set<std::string> FlagOverlay::givenPointers() const {
     return pointers;
 }
 
-void FlagOverlay::requireFinite() const {
-    std::vector<InputIssue> issues;
+std::vector<std::pair<const CLI::Option*, std::string>> FlagOverlay::numberFlags() const {
+    std::vector<std::pair<const CLI::Option*, std::string>> flags;
     for (const auto& entry : m_entries) {
-        if (entry.isNumber && entry.option->count() > 0 && !std::isfinite(entry.number)) {
-            issues.push_back({kFlagsLabel, entry.pointer,
-                              "is " + entry.option->as<std::string>() + " (" +
-                                  entry.option->get_name() + "), not a finite number",
-                              "a finite number"});
+        if (entry.isNumber) {
+            flags.emplace_back(entry.option, entry.pointer);
         }
     }
-    if (!issues.empty()) {
-        throw InputError(std::move(issues));
-    }
+    return flags;
 }
 
 namespace {

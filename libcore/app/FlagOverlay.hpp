@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hvi::app {
@@ -35,8 +36,9 @@ public:
     bool given(const std::string& pointer) const;
     /// The pointers the given flags set.
     std::set<std::string> givenPointers() const;
-    /// Throws InputError labelled "<flags>" for every given number that is NaN or infinite.
-    void requireFinite() const;
+    /// The number flags and the pointers they set, for the tool's check of NaN and infinite
+    /// flag values (tool::FiniteFlags), which then names the pointer.
+    std::vector<std::pair<const CLI::Option*, std::string>> numberFlags() const;
     /// Writes the given values into `document`, creating the objects on the way. A value whose
     /// parent exists but is not an object is skipped (schema validation reports the parent).
     void applyTo(nlohmann::json& document) const;

@@ -2,6 +2,7 @@
 
 #include "app/BuiltinCases.hpp"
 #include "geometry/GmshMesher.hpp"
+#include "io/Checkpoint.hpp"
 #include "io/JsonInput.hpp"
 #include "scene/Scene.hpp"
 #include "solver/RunLoop.hpp"
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <iostream>
 #include <omp.h>
+#include <utility>
 
 namespace hvi::app {
 
@@ -22,6 +24,44 @@ namespace {
 extern "C" void onSignal(int) {
     solver::g_stopRequested.store(true);
 }
+
+/// The run file's name: -o, or the scene's with .h5. A scene read from stdin has no name to
+/// put the run file beside.
+std::string runFileName(const std::string& scene, const std::string& output) {
+    if (!output.empty()) {
+        return output;
+    }
+    if (scene == "-") {
+        throw InputError("<flags>", "--output", "is needed when the scene comes from stdin",
+                         "-o RUN.h5");
+    }
+    return std::filesystem::path(scene).replace_extension(".h5").string();
+}
+
+/// Refuses a run whose outputs would replace its own scene: the run file itself, or the
+/// XDMF, mesh and checkpoint files written beside it. The run file is written to a
+/// temporary and renamed, so the scene would be gone without a word.
+void refuseToOverwriteScene(const std::string& scene, const std::string& output) {
+    if (scene == "-") {
+        return;
+    }
+    const std::filesystem::path run(output);
+    const std::pair<std::filesystem::path, const char*> written[] = {
+        {run, "the run file"},
+        {std::filesystem::path(run).replace_extension(".xmf"), "the run's XDMF sidecar"},
+        {std::filesystem::path(run).replace_extension(".msh"), "the run's FE mesh"},
+        {io::checkpointPathFor(run), "the run's checkpoint"}};
+    for (const auto& [path, what] : written) {
+        std::error_code error; // a file that does not exist yet is not the scene
+        if (std::filesystem::equivalent(scene, path, error)) {
+            throw InputError("<flags>", "--output",
+                             "would replace the scene " + scene + " with " + what + " " +
+                                 path.string(),
+                             "a run file whose name and whose .xmf, .msh and .ckpt.h5 are not "
+                             "the scene's");
+        }
+    }
+}
 } // namespace
 
 HviRunTool::HviRunTool()
@@ -30,8 +70,10 @@ HviRunTool::HviRunTool()
                             "and failure, erosion, contact)") {}
 
 void HviRunTool::addOptions(CLI::App& app) {
-    app.add_option("scene", m_scene, "Scene JSON (from foam2layers/hcomb2rings or by hand)")
-        ->check(CLI::ExistingFile);
+    app.add_option("scene", m_scene,
+                   "Scene JSON (from foam2layers/hcomb2rings or by hand; '-' reads stdin, and "
+                   "then -o is needed)")
+        ->check(CLI::ExistingFile | CLI::IsMember({"-"}));
     app.add_option("-o,--output", m_output,
                    "Run file to write (HDF5; default SCENE.h5), with "
                    "an XDMF sidecar .xmf for ParaView");
@@ -166,6 +208,8 @@ void HviRunTool::execute() {
     if (m_scene.empty()) {
         throw InputError("<flags>", "", "no scene file given", "hvi-run SCENE.json [-o RUN.h5]");
     }
+    const std::string output = runFileName(m_scene, m_output);
+    refuseToOverwriteScene(m_scene, output);
     json doc = io::readJsonFile(m_scene);
     if (!doc.is_object()) {
         throw InputError(m_scene, "", "is not a JSON object", "a scene (hvi-run --print-schema)");
@@ -197,9 +241,6 @@ void HviRunTool::execute() {
         library.merge(material::MaterialLibrary::fromFile(m_materials));
     }
     const scene::Scene scene = scene::parseScene(doc, m_scene, library.names());
-    const std::string output =
-        m_output.empty() ? std::filesystem::path(m_scene).replace_extension(".h5").string()
-                         : m_output;
 
     solver::Simulation sim(scene, library);
     json materials = json::object();

@@ -151,7 +151,8 @@ void checkSingleWall(json& panel, const Add& add) {
         add(kRear, "required key is missing",
             "the single wall's thickness [mm], > 0 (or facesheet_mm)");
     }
-    for (const char* key : {"front_facesheet_mm", "core_thickness_mm", "front_facesheet_material"}) {
+    for (const char* key :
+         {"front_facesheet_mm", "core_thickness_mm", "front_facesheet_material"}) {
         if (panel.contains(key)) {
             add(std::string("/panel/") + key, "is given for a single wall (it has no bumper)",
                 "no bumper or gap keys with panel type single_wall, or type whipple");
@@ -289,10 +290,12 @@ PanelInput loadPanelInput(const std::string& inputFile, const PanelInputKind& ki
         document = fromSizing(document, label, kind, input.notes);
     }
     splitFacesheetForFlags(document, flags);
-    flags.requireFinite();
     flags.applyTo(document);
 
     try {
+        // The tool refuses NaN and infinite flags as it parses them (tool::FiniteFlags);
+        // this check covers callers that parse flags without the tool, as tests do.
+        io::requireFiniteNumbers(document, label);
         io::validateAgainstSchema(document, kind.schemaName, label);
     } catch (const InputError& e) {
         throw input.origin.relabel(e);

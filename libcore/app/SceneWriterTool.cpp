@@ -76,14 +76,13 @@ std::string formatPercent(double relative) {
 std::vector<std::string> sharedReport(const geometry::SceneBuilder& builder) {
     const auto& numerics = builder.numerics();
     const auto& frame = builder.frame();
-    const std::string wall = " mm (rear wall, " +
-                             std::string(geometry::toString(numerics.rearWallDiscretization)) +
-                             ")";
-    return {(frame.bumper ? "facesheets " + formatNumber(frame.frontFacesheetMm) +
-                                " mm (bumper, sph) and " + formatNumber(frame.rearFacesheetMm) +
-                                wall + ", core " +
-                                std::string(geometry::toString(numerics.coreDiscretization))
-                          : "single wall " + formatNumber(frame.rearFacesheetMm) + wall) +
+    const std::string wall =
+        " mm (rear wall, " + std::string(geometry::toString(numerics.rearWallDiscretization)) + ")";
+    return {(frame.bumper
+                 ? "facesheets " + formatNumber(frame.frontFacesheetMm) + " mm (bumper, sph) and " +
+                       formatNumber(frame.rearFacesheetMm) + wall + ", core " +
+                       std::string(geometry::toString(numerics.coreDiscretization))
+                 : "single wall " + formatNumber(frame.rearFacesheetMm) + wall) +
                 ", particle spacing " + formatNumber(numerics.particleSpacingMm) + " mm",
             "domain radius " + formatNumber(builder.domainRadius().value) + " mm (" +
                 (std::isnan(numerics.domainRadiusMm) ? "rule" : "given") + "), end time " +
@@ -118,6 +117,9 @@ void SceneWriterTool::addOptions(CLI::App& app) {
         ->needs(output);
     addCoreOptions(app, m_flags);
     addSharedSceneFlags(app, m_flags);
+    for (const auto& [option, pointer] : m_flags.numberFlags()) {
+        flagSetsPointer(option, pointer);
+    }
     app.footer("Values given by flags override the input file; their errors are reported as "
                "'<flags>: /pointer: ...'.\n" +
                app.get_footer());

@@ -1,17 +1,17 @@
 #include "io/JsonInput.hpp"
 
+#include "io/JsonTextScan.hpp"
 #include "io/Resources.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iostream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <regex>
 #include <set>
-#include <sstream>
 #include <valijson/adapters/nlohmann_json_adapter.hpp>
 #include <valijson/schema.hpp>
 #include <valijson/schema_parser.hpp>
@@ -22,68 +22,71 @@ namespace hvi::io {
 using nlohmann::json;
 
 namespace {
-/// JSON has no NaN or infinity, but hand-edited files and other tools write them. Re-read
-/// the text with those tokens quoted so the error can name the key that holds them.
-void reportNonFiniteTokens(const std::string& text, const std::string& label) {
-    static const std::regex token(R"(([:\[,]\s*)(-?(?:NaN|nan|Infinity|inf|Inf))(?=\s*[,\]}]))");
-    const std::string quoted = std::regex_replace(text, token, "$1\"\\u0001$2\"");
-    if (quoted == text) {
-        return;
-    }
-    json document = json::parse(quoted, nullptr, false);
-    if (document.is_discarded()) {
-        return;
-    }
-    std::vector<InputIssue> issues;
-    std::function<void(const json&, const std::string&)> walk = [&](const json& v,
-                                                                    const std::string& ptr) {
-        if (v.is_string() && !v.get<std::string>().empty() && v.get<std::string>()[0] == '\x01') {
-            issues.push_back({label, ptr, "is " + v.get<std::string>().substr(1) +
-                                              ", not a finite number", "a finite number"});
-        } else if (v.is_object()) {
-            for (const auto& [k, sub] : v.items()) {
-                walk(sub, ptr + "/" + k);
-            }
-        } else if (v.is_array()) {
-            for (std::size_t i = 0; i < v.size(); ++i) {
-                walk(v[i], ptr + "/" + std::to_string(i));
-            }
-        }
-    };
-    walk(document, "");
-    if (!issues.empty()) {
-        throw InputError(std::move(issues));
-    }
+
+/// nlohmann's message without its "[json.exception.parse_error.101] " tag.
+std::string withoutTag(const std::string& message) {
+    const auto pos = message.find("] ");
+    return pos == std::string::npos ? message : message.substr(pos + 2);
 }
+
+/// The whole content of an open file, read in one allocation when its size is known (a
+/// regular file), so a large input is held once, not twice.
+std::string readAll(std::istream& in) {
+    std::string text;
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size > 0) {
+        text.resize(static_cast<std::size_t>(size));
+        in.seekg(0, std::ios::beg);
+        in.read(text.data(), size);
+        text.resize(static_cast<std::size_t>(in.gcount()));
+        return text;
+    }
+    in.clear();
+    in.seekg(0, std::ios::beg);
+    in.clear();
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return text;
+}
+
 } // namespace
 
 json parseJsonText(const std::string& text, const std::string& label) {
+    // Before the parser: a document too deep for the recursive walks that follow, and the
+    // values JSON cannot hold (NaN, Infinity, 1e400), which the scan can place by pointer.
+    JsonTextScan scan = scanJsonText(text, label);
+    if (scan.tooDeep) {
+        throw InputError({*scan.tooDeep});
+    }
+    if (scan.wellFormed && !scan.nonFinite.empty()) {
+        throw InputError(std::move(scan.nonFinite));
+    }
     try {
         return json::parse(text);
-    } catch (const json::parse_error& e) {
-        reportNonFiniteTokens(text, label);
-        // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3,
-        // column 5: syntax error ..."; keep only the part after the bracketed tag.
-        std::string message = e.what();
-        if (auto pos = message.find("] "); pos != std::string::npos) {
-            message = message.substr(pos + 2);
-        }
-        throw InputError(label, "", "not valid JSON: " + message, "a JSON document");
+    } catch (const json::exception& e) {
+        // A syntax error ("parse error at line 3, column 5: ..."), or a number the scan
+        // missed; either way the text is not a document we can read.
+        throw InputError(label, "", "not valid JSON: " + withoutTag(e.what()), "a JSON document");
     }
 }
 
 json readJsonFile(const std::string& path) {
-    std::ostringstream text;
     if (path == "-") {
-        text << std::cin.rdbuf();
-    } else {
-        std::ifstream in(path);
-        if (!in) {
-            throw InputError(path, "", "cannot be read", "an existing, readable JSON file");
-        }
-        text << in.rdbuf();
+        return parseJsonText(readAll(std::cin), path);
     }
-    return parseJsonText(text.str(), path);
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+        throw InputError(path, "", "is a directory", "a JSON file");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw InputError(path, "", "cannot be read", "an existing, readable JSON file");
+    }
+    const std::string text = readAll(in);
+    if (in.bad()) {
+        throw InputError(path, "", "cannot be read", "an existing, readable JSON file");
+    }
+    return parseJsonText(text, path);
 }
 
 const json& schema(const std::string& schemaName) {
@@ -162,7 +165,8 @@ const json* schemaNodeAt(const json& root, const json& document, const std::stri
     std::string rest = pointer;
     while (!rest.empty()) {
         auto next = rest.find('/', 1);
-        std::string token = rest.substr(1, next == std::string::npos ? std::string::npos : next - 1);
+        std::string token =
+            rest.substr(1, next == std::string::npos ? std::string::npos : next - 1);
         rest = next == std::string::npos ? "" : rest.substr(next);
         node = resolveRef(root, node);
         if (!node) {
@@ -186,8 +190,8 @@ const json* schemaNodeAt(const json& root, const json& document, const std::stri
             return nullptr;
         }
         node = it->second;
-        value = (value && value->is_object() && value->contains(token)) ? &(*value)[token]
-                                                                         : nullptr;
+        value =
+            (value && value->is_object() && value->contains(token)) ? &(*value)[token] : nullptr;
     }
     return node;
 }
@@ -329,8 +333,7 @@ void validateAgainstSchema(const json& document, const std::string& schemaName,
                 std::string::npos ||
             candidate.description.find("Failed to validate against schema associated") !=
                 std::string::npos ||
-            candidate.description.find("Failed to validate against 'then'") !=
-                std::string::npos;
+            candidate.description.find("Failed to validate against 'then'") != std::string::npos;
         bool hasDeeper = false;
         for (const auto& other : raw) {
             if (other.pointer.size() > candidate.pointer.size() &&
@@ -339,18 +342,20 @@ void validateAgainstSchema(const json& document, const std::string& schemaName,
                 break;
             }
         }
-        if (isSummary || (hasDeeper && candidate.description.find("could not be validated") ==
-                                           std::string::npos &&
-                          candidate.description.find("Missing required") == std::string::npos)) {
+        if (isSummary ||
+            (hasDeeper &&
+             candidate.description.find("could not be validated") == std::string::npos &&
+             candidate.description.find("Missing required") == std::string::npos)) {
             continue;
         }
         std::string pointer;
-        std::string problem = rewriteProblem(candidate.description, document, candidate.pointer,
-                                             pointer);
+        std::string problem =
+            rewriteProblem(candidate.description, document, candidate.pointer, pointer);
         if (!seen.insert(pointer + "|" + problem).second) {
             continue;
         }
-        issues.push_back({file, pointer, problem, describe(root, schemaNodeAt(root, document, pointer))});
+        issues.push_back(
+            {file, pointer, problem, describe(root, schemaNodeAt(root, document, pointer))});
     }
     if (issues.empty()) {
         issues.push_back({file, "", "does not match the schema '" + schemaName + "'", ""});

@@ -14,10 +14,12 @@
 namespace hvi::io {
 
 /// Parses a JSON file ("-" reads standard input). Throws InputError naming the file and the
-/// line/column of a syntax error, or that the file cannot be read.
+/// line/column of a syntax error, or that the file is a directory or cannot be read.
 nlohmann::json readJsonFile(const std::string& path);
 
-/// Parses JSON text; `label` names the source in error messages.
+/// Parses JSON text; `label` names the source in error messages. Refuses, with the JSON
+/// pointer, nesting deeper than kMaxJsonDepth and NaN, Infinity or numbers beyond a double
+/// (see io/JsonTextScan.hpp), so every document it returns is safe to walk recursively.
 nlohmann::json parseJsonText(const std::string& text, const std::string& label);
 
 /// Validates `document` against the embedded schema `schemaName` (e.g. "constraints").

@@ -34,6 +34,13 @@ nlohmann::json Tool::provenance(const std::string& inputFile,
             {"resolved_input", resolvedInput}};
 }
 
+int Tool::reportInputError(const InputError& error) const {
+    for (const auto& issue : error.issues()) {
+        std::cerr << m_name << ": " << issue.format() << "\n";
+    }
+    return static_cast<int>(ExitCode::BadInput);
+}
+
 int Tool::run(int argc, char** argv) {
     CLI::App app{m_summary, m_name};
     app.set_version_flag("--version", m_name + " " + versionString());
@@ -46,13 +53,21 @@ int Tool::run(int argc, char** argv) {
                "failed, 4 interrupted.");
     try {
         addOptions(app);
+        m_finiteFlags.watch(app);
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
         return app.exit(e); // --help, --version
     } catch (const CLI::ParseError& e) {
+        // A NaN or infinity is the likelier cause of a failed range check; name it first.
+        if (!m_finiteFlags.issues().empty()) {
+            return reportInputError(InputError(m_finiteFlags.issues()));
+        }
         std::cerr << m_name << ": usage: " << e.what() << " (run '" << m_name
                   << " --help' for the options)\n";
         return static_cast<int>(ExitCode::BadInput);
+    }
+    if (!m_finiteFlags.issues().empty()) {
+        return reportInputError(InputError(m_finiteFlags.issues()));
     }
     try {
         if (m_printSchema) {
@@ -62,10 +77,7 @@ int Tool::run(int argc, char** argv) {
         execute();
         return static_cast<int>(m_checkFailed ? ExitCode::CheckFailed : ExitCode::Ok);
     } catch (const InputError& e) {
-        for (const auto& issue : e.issues()) {
-            std::cerr << m_name << ": " << issue.format() << "\n";
-        }
-        return static_cast<int>(ExitCode::BadInput);
+        return reportInputError(e);
     } catch (const Interrupted& e) {
         std::cerr << m_name << ": " << e.what() << "\n";
         return static_cast<int>(ExitCode::Interrupted);

@@ -1,12 +1,14 @@
 // The one skeleton every executable is built on (after PDAL's Kernel): it sets up the
-// command line, the common flags (--help, --version, --quiet, --print-schema), calls the
-// tool's execute() inside the single try/catch, and maps what it throws onto the exit
-// codes of docs/conventions.md. A tool's main.cpp is then only
+// command line, the common flags (--help, --version, --quiet, --print-schema), refuses NaN
+// and infinities in every numeric flag (FiniteFlags), calls the tool's execute() inside the
+// single try/catch, and maps what it throws onto the exit codes of docs/conventions.md. A
+// tool's main.cpp is then only
 //
 //     int main(int argc, char** argv) { return hvi::tool::BleSizeTool().run(argc, argv); }
 #pragma once
 
 #include "core/Error.hpp"
+#include "tool/FiniteFlags.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -41,17 +43,26 @@ protected:
     /// Marks a requested check as failed (hvi-assess --expect): execute() still finishes
     /// and writes its outputs, and run() then returns ExitCode::CheckFailed (1).
     void setCheckFailed() { m_checkFailed = true; }
+    /// Tells the NaN/infinity check of the numeric flags (FiniteFlags) that `option` sets
+    /// the input document's value at `pointer`, so its error names that pointer.
+    void flagSetsPointer(const CLI::Option* option, const std::string& pointer) {
+        m_finiteFlags.setPointer(option, pointer);
+    }
 
     /// The provenance block every output carries: tool, version, input, resolved input.
     nlohmann::json provenance(const std::string& inputFile,
                               const nlohmann::json& resolvedInput) const;
 
 private:
+    /// Prints one line per issue and returns the bad-input exit code.
+    int reportInputError(const InputError& error) const;
+
     std::string m_name;
     std::string m_summary;
     bool m_quiet = false;
     bool m_printSchema = false;
     bool m_checkFailed = false;
+    FiniteFlags m_finiteFlags;
 };
 
 /// The version line printed by --version and recorded in outputs.

@@ -1,6 +1,8 @@
 // JSON input checks: every class of bad input gives an issue with the right JSON pointer.
+#include "TestPaths.hpp"
 #include "io/JsonInput.hpp"
 
+#include <filesystem>
 #include <gtest/gtest.h>
 
 using hvi::InputError;
@@ -28,7 +30,9 @@ std::vector<hvi::InputIssue> issuesOf(const json& doc) {
 
 } // namespace
 
-TEST(JsonInput, GoodDocumentPasses) { EXPECT_TRUE(issuesOf(goodConstraints()).empty()); }
+TEST(JsonInput, GoodDocumentPasses) {
+    EXPECT_TRUE(issuesOf(goodConstraints()).empty());
+}
 
 TEST(JsonInput, NegativeValueNamesPointerAndUnit) {
     json doc = goodConstraints();
@@ -110,4 +114,79 @@ TEST(JsonInput, DefaultsAreFilledIn) {
     EXPECT_EQ(resolved["shield"]["rear_wall_material"], "Al6061-T6");
     EXPECT_EQ(resolved["options"]["thesis_compat"], false);
     EXPECT_EQ(resolved["mode"], "performance");
+}
+
+// Hostile texts (issue #25). None may crash the reader, and each gets one issue that says
+// where the problem is.
+namespace {
+
+std::string nestedArrays(std::size_t depth) {
+    return std::string(depth, '[') + std::string(depth, ']');
+}
+
+/// The issues parseJsonText raises for `text` (empty when it parses).
+std::vector<hvi::InputIssue> parseIssues(const std::string& text) {
+    try {
+        parseJsonText(text, "c.json");
+    } catch (const InputError& e) {
+        return e.issues();
+    }
+    return {};
+}
+
+} // namespace
+
+TEST(JsonInput, DeepNestingIsRefusedWithItsPointer) {
+    const auto issues = parseIssues("{\"summary\": {\"notes\": " + nestedArrays(30000) + "}}");
+    ASSERT_EQ(issues.size(), 1u);
+    EXPECT_EQ(issues[0].pointer.rfind("/summary/notes/0/0", 0), 0u) << issues[0].format();
+    EXPECT_NE(issues[0].problem.find("256 levels"), std::string::npos) << issues[0].format();
+}
+
+TEST(JsonInput, NestingUpToTheLimitIsAccepted) {
+    // The document's own object and 255 arrays inside it: 256 levels.
+    EXPECT_NO_THROW(parseJsonText("{\"a\": " + nestedArrays(255) + "}", "c.json"));
+    EXPECT_FALSE(parseIssues("{\"a\": " + nestedArrays(256) + "}").empty());
+}
+
+TEST(JsonInput, LongWhitespaceRunInABrokenFileIsASyntaxError) {
+    const auto issues = parseIssues("{\"threat\":" + std::string(100000, '\n'));
+    ASSERT_EQ(issues.size(), 1u);
+    EXPECT_NE(issues[0].problem.find("not valid JSON"), std::string::npos) << issues[0].format();
+    EXPECT_NE(issues[0].problem.find("line 100001"), std::string::npos) << issues[0].format();
+}
+
+TEST(JsonInput, NonFiniteTokensAreFoundOutsideStringsOnly) {
+    const auto issues =
+        parseIssues(R"({"a\"b": "x\": NaN, ", "c/d": [1, -Infinity, {"e": inf}], "f": "NaN"})");
+    ASSERT_EQ(issues.size(), 2u);
+    EXPECT_EQ(issues[0].pointer, "/c~1d/1");
+    EXPECT_NE(issues[0].problem.find("is -Infinity, not a finite number"), std::string::npos)
+        << issues[0].format();
+    EXPECT_EQ(issues[1].pointer, "/c~1d/2/e");
+}
+
+TEST(JsonInput, NonFiniteTokenInABrokenFileIsASyntaxError) {
+    const auto issues = parseIssues(R"({"a": NaN, "b": })");
+    ASSERT_EQ(issues.size(), 1u);
+    EXPECT_NE(issues[0].problem.find("not valid JSON"), std::string::npos) << issues[0].format();
+}
+
+TEST(JsonInput, NumberBeyondADoubleNamesItsPointer) {
+    const auto issues = parseIssues(R"({"threat": {"diameter_mm": 1e400}})");
+    ASSERT_EQ(issues.size(), 1u);
+    EXPECT_EQ(issues[0].pointer, "/threat/diameter_mm");
+    EXPECT_NE(issues[0].problem.find("1e400"), std::string::npos) << issues[0].format();
+}
+
+TEST(JsonInput, DirectoryIsNamedAsSuch) {
+    const auto directory = hvi::test::tempPath("a-directory.json");
+    std::filesystem::create_directories(directory);
+    try {
+        hvi::io::readJsonFile(directory.string());
+        FAIL() << "a directory was read as JSON";
+    } catch (const InputError& e) {
+        ASSERT_EQ(e.issues().size(), 1u);
+        EXPECT_NE(e.issues()[0].problem.find("is a directory"), std::string::npos) << e.what();
+    }
 }
