@@ -347,7 +347,7 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
             el.srr[i] += dt * m_rates.dsrr[i];
             el.srz[i] += dt * m_rates.dsrz[i];
         }
-        materials.applyPlasticity(el, m_rates, tile);
+        materials.applyPlasticity(el, m_rates, tile, dt);
     }
 
     // 4: energy, with the pressure work at the mean of the start and a predicted end pressure:

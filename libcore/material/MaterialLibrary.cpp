@@ -8,11 +8,11 @@
 
 #include "core/Error.hpp"
 #include "core/Units.hpp"
+#include "io/JsonInput.hpp"
 #include "io/Resources.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -332,8 +332,8 @@ std::optional<JohnsonCookDamage> readFailure(Section& s) {
                                   above(0.0), JohnsonCookDamage::kDefaultMinFailureStrain);
     d.compressionCutoff =
         s.number("compression_cutoff_triaxiality",
-                 "sigma* below which no damage accumulates [-] (default -1/3, Bao-Wierzbicki)",
-                 {}, JohnsonCookDamage::kDefaultCompressionCutoff);
+                 "sigma* below which no damage accumulates [-] (default -1/3, Bao-Wierzbicki)", {},
+                 JohnsonCookDamage::kDefaultCompressionCutoff);
     if (d.maxTriaxiality <= d.minTriaxiality) {
         s.issue(s.pointerTo("triaxiality_max"),
                 "must exceed triaxiality_min (" + formatNumber(d.minTriaxiality) + "), got " +
@@ -349,11 +349,30 @@ SpallStrength readSpall(Section& s) {
     SpallStrength spall;
     spall.strengthGPa =
         s.number("strength_GPa", "spall strength: mean tension at failure [GPa], > 0", above(0.0));
-    spall.rateExponent = s.number("rate_exponent", "power-law rate exponent n [-], >= 0 (default 0)",
-                                  atLeast(0.0), 0.0);
+    spall.rateExponent = s.number(
+        "rate_exponent", "power-law rate exponent n [-], >= 0 (default 0)", atLeast(0.0), 0.0);
     spall.referenceStrainRatePerUs = units::perSecondToPerMicrosecond(
         s.number("reference_strain_rate_per_s",
                  "strain rate of strength_GPa [1/s], > 0 (default 1)", above(0.0), 1.0));
+    s.readSection("tuler_butcher", "cumulative-damage (Tuler-Butcher) object", [&](Section& tb) {
+        CumulativeSpall c;
+        c.thresholdGPa = tb.number("threshold_GPa",
+                                   "tension sigma_0 beyond which damage accumulates [GPa], >= 0 "
+                                   "and below strength_GPa",
+                                   atLeast(0.0));
+        c.exponent =
+            tb.number("exponent", "lambda of (sigma_1 - sigma_0)^lambda [-], >= 1", atLeast(1.0));
+        c.criticalIntegral =
+            tb.number("critical_integral_GPa_us",
+                      "K_f: the integral that fails a point [GPa^exponent us], > 0", above(0.0));
+        tb.text("source", kSourceWhat);
+        tb.rejectUnknownKeys();
+        if (c.thresholdGPa >= spall.strengthGPa) {
+            tb.issue(tb.pointerTo("threshold_GPa"), "is not below strength_GPa",
+                     "a threshold below the instantaneous strength, its ceiling");
+        }
+        spall.cumulative = c;
+    });
     s.rejectUnknownKeys();
     return spall;
 }
@@ -417,13 +436,6 @@ void readMaterial(const json& entry, const std::string& name, const std::string&
     m.rejectUnknownKeys();
 }
 
-std::string stripJsonExceptionPrefix(const std::string& what) {
-    // nlohmann messages start "[json.exception.parse_error.101] "; users need the rest.
-    const auto pos = what.find("] ");
-    return what.rfind("[json.exception.", 0) == 0 && pos != std::string::npos ? what.substr(pos + 2)
-                                                                              : what;
-}
-
 } // namespace
 
 const MaterialLibrary& MaterialLibrary::builtin() {
@@ -473,17 +485,8 @@ MaterialLibrary MaterialLibrary::fromJson(const json& document, const std::strin
 }
 
 MaterialLibrary MaterialLibrary::fromFile(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) {
-        throw InputError(path, "", "cannot be opened for reading", "a JSON material library");
-    }
-    json document;
-    try {
-        document = json::parse(in);
-    } catch (const json::parse_error& e) {
-        throw InputError(path, "", stripJsonExceptionPrefix(e.what()), "valid JSON");
-    }
-    return fromJson(document, path);
+    // The shared reader: one linear pre-scan (nesting, non-finite numbers) before parsing.
+    return fromJson(io::readJsonFile(path), path);
 }
 
 const MaterialSpec& MaterialLibrary::get(const std::string& name) const {

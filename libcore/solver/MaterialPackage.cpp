@@ -118,7 +118,7 @@ void MaterialPackage::addStressRates(const Points& ps, std::span<const int32_t> 
 
 template <class Points, class Rates>
 void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
-                                      std::span<const int32_t> active) const {
+                                      std::span<const int32_t> active, double dt) const {
     if (!ps.hasStrength()) {
         return;
     }
@@ -158,8 +158,8 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
                     },
                     spec.failure);
             }
-            if (spec.spall && spec.spall->exceeded(s, ps.p[i], rate)) {
-                ps.damage[i] = 1.0;
+            if (spec.spall) {
+                ps.damage[i] = spec.spall->damageAfter(ps.damage[i], s, ps.p[i], rate, dt);
             }
             if (ps.damage[i] >= 1.0) {
                 s = StressDeviator{};
@@ -181,8 +181,8 @@ template void MaterialPackage::addStressRates(const sph::ParticleSet&, std::span
 template void MaterialPackage::addStressRates(const fe::ElementSet&, std::span<const int32_t>,
                                               fe::ElementRates&) const;
 template void MaterialPackage::applyPlasticity(sph::ParticleSet&, const sph::ParticleRates&,
-                                               std::span<const int32_t>) const;
+                                               std::span<const int32_t>, double) const;
 template void MaterialPackage::applyPlasticity(fe::ElementSet&, const fe::ElementRates&,
-                                               std::span<const int32_t>) const;
+                                               std::span<const int32_t>, double) const;
 
 } // namespace hvi::solver

@@ -63,9 +63,11 @@ public:
     void addStressRates(const Points& points, std::span<const int32_t> active, Rates& rates) const;
 
     /// Radial return onto the Johnson-Cook yield surface, plastic strain, damage
-    /// accumulation and the failed / under-dense states, after the deviator was updated.
+    /// accumulation (over the step dt [us]) and the failed / under-dense states, after the
+    /// deviator was updated.
     template <class Points, class Rates>
-    void applyPlasticity(Points& points, const Rates& rates, std::span<const int32_t> active) const;
+    void applyPlasticity(Points& points, const Rates& rates, std::span<const int32_t> active,
+                         double dt) const;
 
     const std::vector<BodyMaterial>& bodies() const { return m_bodies; }
 

@@ -414,7 +414,7 @@ void Simulation::advance() {
         book(m_packageSeconds.fe);
     }
     clampSmoothingLengths();
-    m_materials->applyPlasticity(ps, rt, m_neighbours.active);
+    m_materials->applyPlasticity(ps, rt, m_neighbours.active, dt);
     m_materials->updatePressure(ps, evolving);
 
     m_time += dt;

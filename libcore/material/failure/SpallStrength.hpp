@@ -12,6 +12,14 @@
 // describes ductile failure over the triaxialities it was calibrated at, and is not
 // extrapolated to the near-hydrostatic tension of a spall plane.
 //
+// Optionally also cumulative (Tuler and Butcher, Int. J. Fract. Mech. 4 (1968) 431): real spall
+// takes time (voids nucleate, grow and join), so a short tensile excursion beyond a threshold
+// sigma_0 fails a point only once
+//   K = integral of (sigma_1 - sigma_0)^lambda dt
+// reaches K_f. Its damage K / K_f adds to the point's damage (with Johnson-Cook's), and the
+// instantaneous strength stays as the ceiling no duration can exceed. No measured constants of
+// these alloys were read (docs/materials.md); the criterion is an input for sensitivity studies.
+//
 // The principal stress, not the mean tension, because that is what the datum measures: in a
 // plate-impact test (uniaxial strain) the free-surface velocity pulls back by du after its
 // peak, and 0.5 rho0 c du estimates the longitudinal stress at which the spall plane opened
@@ -24,17 +32,33 @@
 
 #include "material/strength/StressDeviator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string_view>
 
 namespace hvi::material {
 
+/// The cumulative part: damage rate (sigma_1 - sigma_0)^lambda / K_f beyond sigma_0.
+struct CumulativeSpall {
+    double thresholdGPa = 0.0;     ///< sigma_0 >= 0
+    double exponent = 2.0;         ///< lambda >= 1
+    double criticalIntegral = 0.0; ///< K_f [GPa^lambda us], > 0
+
+    /// dD/dt [1/us] at principal tension sigma_1 [GPa].
+    double damageRate(double sigma1) const noexcept {
+        const double excess = sigma1 - thresholdGPa;
+        return excess > 0.0 ? std::pow(excess, exponent) / criticalIntegral : 0.0;
+    }
+};
+
 struct SpallStrength {
     static constexpr std::string_view kId = "failure.spall_strength";
 
-    double strengthGPa = 0.0;           ///< sigma_sp0 > 0
-    double rateExponent = 0.0;          ///< n >= 0 (0: rate-independent)
-    double referenceStrainRatePerUs = 1.0e-6; ///< eps_dot_0 [1/us]
+    double strengthGPa = 0.0;                  ///< sigma_sp0 > 0
+    double rateExponent = 0.0;                 ///< n >= 0 (0: rate-independent)
+    double referenceStrainRatePerUs = 1.0e-6;  ///< eps_dot_0 [1/us]
+    std::optional<CumulativeSpall> cumulative; ///< Tuler-Butcher damage below the ceiling
 
     /// sigma_sp at the given strain rate [1/us].
     double strengthAt(double strainRatePerUs) const noexcept {
@@ -48,6 +72,20 @@ struct SpallStrength {
     /// S exceeds the spall strength.
     bool exceeded(const StressDeviator& s, double pressure, double strainRatePerUs) const noexcept {
         return s.maxPrincipal() - pressure > strengthAt(strainRatePerUs);
+    }
+
+    /// The point's damage after a step of dt [us] at deviator S and pressure P: 1 beyond the
+    /// strength, else `damage` plus the cumulative part's increment (capped at 1).
+    double damageAfter(double damage, const StressDeviator& s, double pressure,
+                       double strainRatePerUs, double dtUs) const noexcept {
+        const double sigma1 = s.maxPrincipal() - pressure;
+        if (sigma1 > strengthAt(strainRatePerUs)) {
+            return 1.0;
+        }
+        if (!cumulative) {
+            return damage;
+        }
+        return std::min(damage + dtUs * cumulative->damageRate(sigma1), 1.0);
     }
 };
 

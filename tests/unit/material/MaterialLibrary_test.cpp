@@ -170,11 +170,11 @@ TEST(MaterialLibrary, MissingSourceIsRejected) {
 TEST(MaterialLibrary, UnreadableOrInvalidFilesAreInputErrors) {
     EXPECT_NE(inputErrorMessage([] {
                   MaterialLibrary::fromFile(hvi::test::dataPath("material/absent.json").string());
-              }).find("cannot be opened"),
+              }).find("cannot be read"),
               std::string::npos);
     const std::string message = inputErrorMessage(
         [] { MaterialLibrary::fromFile(hvi::test::dataPath("material/not_json.json").string()); });
-    EXPECT_NE(message.find("(valid JSON)"), std::string::npos) << message;
+    EXPECT_NE(message.find("not valid JSON"), std::string::npos) << message;
     EXPECT_EQ(message.find("[json.exception"), std::string::npos) << message;
 }
 
@@ -205,15 +205,16 @@ TEST(MaterialLibrary, AluminiumSpallStrengthAndDamageRange) {
             EXPECT_EQ(m.spall->rateExponent, 0.0) << name;
         }
     }
-    const auto& d = std::get<JohnsonCookDamage>(MaterialLibrary::builtin().get("Al6061-T6").failure);
+    const auto& d =
+        std::get<JohnsonCookDamage>(MaterialLibrary::builtin().get("Al6061-T6").failure);
     EXPECT_EQ(d.maxTriaxiality, 1.0);
     EXPECT_EQ(d.compressionCutoff, -1.0 / 3.0);
 }
 
 TEST(MaterialLibrary, BadSpallStrengthIsReportedByPointer) {
     nlohmann::json doc = readJson(hvi::test::dataPath("material/user_library.json"));
-    doc["materials"]["MyAl"]["spall"] = {{"strength_GPa", -1.2}, {"rate_exponent", 0.06},
-                                         {"source", "test"}};
+    doc["materials"]["MyAl"]["spall"] = {
+        {"strength_GPa", -1.2}, {"rate_exponent", 0.06}, {"source", "test"}};
     std::string message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
     EXPECT_NE(message.find("doc: /materials/MyAl/spall/strength_GPa: must be > 0, got -1.2"),
               std::string::npos)
@@ -223,5 +224,35 @@ TEST(MaterialLibrary, BadSpallStrengthIsReportedByPointer) {
     message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
     EXPECT_NE(message.find("/materials/MyAl/strength: missing (required with a spall strength)"),
               std::string::npos)
+        << message;
+}
+
+TEST(MaterialLibrary, CumulativeSpallIsReadAndCheckedByPointer) {
+    nlohmann::json doc = readJson(hvi::test::dataPath("material/user_library.json"));
+    doc["materials"]["MyAl"] =
+        nlohmann::json::parse(MaterialLibrary::builtin().get("Al6061-T6").definitionJson);
+    doc["materials"]["MyAl"]["spall"] = {{"strength_GPa", 3.0},
+                                         {"source", "test"},
+                                         {"tuler_butcher",
+                                          {{"threshold_GPa", 1.0},
+                                           {"exponent", 2.0},
+                                           {"critical_integral_GPa_us", 0.2},
+                                           {"source", "test"}}}};
+    const MaterialLibrary lib = MaterialLibrary::fromJson(doc, "doc");
+    const auto& c = lib.get("MyAl").spall->cumulative;
+    ASSERT_TRUE(c.has_value());
+    EXPECT_EQ(c->thresholdGPa, 1.0);
+    EXPECT_EQ(c->exponent, 2.0);
+    EXPECT_EQ(c->criticalIntegral, 0.2);
+    doc["materials"]["MyAl"]["spall"]["tuler_butcher"]["threshold_GPa"] = 3.5;
+    std::string message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(message.find("doc: /materials/MyAl/spall/tuler_butcher/threshold_GPa: is not below "
+                           "strength_GPa"),
+              std::string::npos)
+        << message;
+    doc["materials"]["MyAl"]["spall"]["tuler_butcher"]["threshold_GPa"] = 1.0;
+    doc["materials"]["MyAl"]["spall"]["tuler_butcher"]["K"] = 0.2;
+    message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(message.find("/materials/MyAl/spall/tuler_butcher/K: unknown key"), std::string::npos)
         << message;
 }
