@@ -236,6 +236,15 @@ Scene parseScene(const json& document, const std::string& file,
                                   " mm): it cannot be resolved",
                               "a thicker body or a smaller spacing_mm"});
         }
+        // In axisymmetry a part of a shield or its projectile that reaches the axis cannot
+        // move radially as a whole (issue #25, item 9). A body of role "other" may: a
+        // converging flow such as the cylindrical Noh problem starts that way.
+        if (scene.geometry == Geometry::Axisymmetric && b.role != BodyRole::Other &&
+            b.velocityR != 0.0 && b.shape.boundRMin() <= 0.0) {
+            issues.push_back({file, ptr + "/velocity/r_km_s",
+                              "a radial velocity on a body that reaches the axis",
+                              "0 in axisymmetric geometry (or a body off the axis)"});
+        }
         scene.bodies.push_back(b);
     }
     // The domain radius: given, or the widest body plus a margin of 10 % (plates with no

@@ -135,8 +135,9 @@ std::vector<PointRecord> readPoints(const fs::path& dir, const json& spec) {
         p.axisOnly = verdict.value("axis_band_only", false);
         out.push_back(p);
     }
-    std::sort(out.begin(), out.end(),
-              [](const PointRecord& a, const PointRecord& b) { return a.name < b.name; });
+    std::sort(out.begin(), out.end(), [](const PointRecord& a, const PointRecord& b) {
+        return a.point.value < b.point.value;
+    });
     return out;
 }
 

@@ -64,7 +64,7 @@ struct PointRecord {
     bool axisOnly = false; ///< a P resting on the axis band alone
 };
 
-/// The points of DIR with a verdict.json, in name order. Throws std::runtime_error naming the
+/// The points of DIR with a verdict.json, by increasing value. Throws std::runtime_error naming the
 /// file when a verdict or panel cannot be read.
 std::vector<PointRecord> readPoints(const std::filesystem::path& dir, const nlohmann::json& spec);
 

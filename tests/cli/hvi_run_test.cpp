@@ -55,9 +55,14 @@ TEST(HviRunCli, BadScenesAreRejectedWithoutOutput) {
     negative.replace(negative.find("\"radius_mm\": 0.5"), 16, "\"radius_mm\": -0.5");
     std::string unknownKey = kScene;
     unknownKey.replace(unknownKey.find("\"end_time_us\""), 13, "\"end_tme_us\"");
+    // A body on the axis cannot move radially in axisymmetry (issue #25, item 9).
+    std::string radialOnAxis = kScene;
+    radialOnAxis.replace(radialOnAxis.find("\"z_km_s\": 3.0"), 13,
+                         "\"z_km_s\": 3.0, \"r_km_s\": 0.5");
     const Case cases[] = {{"unknown-material", unknownMaterial, "/bodies/0/material"},
                           {"negative", negative, "/bodies/0/shape/radius_mm"},
-                          {"unknown-key", unknownKey, "/run/end_tme_us"}};
+                          {"unknown-key", unknownKey, "/run/end_tme_us"},
+                          {"radial-on-axis", radialOnAxis, "/bodies/0/velocity/r_km_s"}};
     for (const auto& c : cases) {
         const auto scene = writeTemp(std::string(c.name) + ".json", c.text);
         const auto run = tempPath(std::string(c.name) + ".h5");
