@@ -210,6 +210,13 @@ void HviRunTool::execute() {
     }
     const std::string output = runFileName(m_scene, m_output);
     refuseToOverwriteScene(m_scene, output);
+    // --resume without a checkpoint would start afresh and overwrite what is there.
+    if (m_resume && !std::filesystem::exists(io::checkpointPathFor(output))) {
+        throw InputError("<flags>", "--resume",
+                         "no checkpoint " + io::checkpointPathFor(output).string() +
+                             " to continue from",
+                         "the checkpoint an interrupted run of this -o left, or no --resume");
+    }
     json doc = io::readJsonFile(m_scene);
     if (!doc.is_object()) {
         throw InputError(m_scene, "", "is not a JSON object", "a scene (hvi-run --print-schema)");

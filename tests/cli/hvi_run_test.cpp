@@ -75,6 +75,18 @@ TEST(HviRunCli, BadScenesAreRejectedWithoutOutput) {
     }
 }
 
+// --resume with nothing to resume from used to start the run afresh without a word (issue #25).
+TEST(HviRunCli, ResumeWithoutACheckpointIsRefused) {
+    const auto scene = writeTemp("noresume.json", kScene);
+    const auto run = tempPath("noresume.h5");
+    std::filesystem::remove(run);
+    std::filesystem::remove(tempPath("noresume.ckpt.h5"));
+    const auto r = runTool("hvi-run", scene.string() + " -o " + run.string() + " --resume");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("--resume: no checkpoint"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(run));
+}
+
 TEST(HviRunCli, BenchmarkPrintsThroughput) {
     const auto r = runTool("hvi-run", "--benchmark --resolution-mm 0.1 --benchmark-steps 5 "
                                       "--threads 1");
