@@ -3,10 +3,10 @@
 #include "ble/BleMaterials.hpp"
 #include "core/Error.hpp"
 #include "core/Units.hpp"
+#include "io/JsonInput.hpp"
 
 #include <cmath>
 #include <functional>
-#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -175,21 +175,6 @@ double foamDensityGCm3(const json& shield, double facesheetDensity, double faces
     return m->densityGCm3 * shield.at("relative_density_percent").get<double>() / 100.0;
 }
 
-/// The pointer of the first NaN or infinity in `value` (std::nullopt when there is none).
-std::optional<std::string> firstNonFinite(const json& value, const std::string& pointer) {
-    if (value.is_number_float() && !std::isfinite(value.get<double>())) {
-        return pointer;
-    }
-    if (value.is_structured()) {
-        for (const auto& [key, sub] : value.items()) {
-            if (auto found = firstNonFinite(sub, pointer + "/" + key)) {
-                return found;
-            }
-        }
-    }
-    return std::nullopt;
-}
-
 /// A result beyond the range of a double (a 1e308 mm core gives d_c = inf) is a failed
 /// computation (exit 3), not bad input: every input is a legal number the equations take,
 /// and which of them drove the result out of range depends on the equation, so no single
@@ -197,10 +182,13 @@ std::optional<std::string> firstNonFinite(const json& value, const std::string& 
 void requireFiniteResults(const BleSizingOutcome& out) {
     const std::string advice = ": the equation's result is beyond the range of a double; the "
                                "inputs are far outside what it describes (no output written)";
-    if (auto pointer = firstNonFinite(out.sizing, "")) {
-        const double value = out.sizing.at(json::json_pointer(*pointer)).get<double>();
+    try {
+        io::requireFiniteNumbers(out.sizing, "<sizing>");
+    } catch (const InputError& e) {
+        const std::string& pointer = e.issues().front().pointer;
+        const double value = out.sizing.at(json::json_pointer(pointer)).get<double>();
         const std::string shown = std::isnan(value) ? "NaN" : (value > 0.0 ? "inf" : "-inf");
-        throw RuntimeFailure(*pointer + " is " + shown + advice);
+        throw RuntimeFailure(pointer + " is " + shown + advice);
     }
     for (const auto& point : out.curve.points) {
         if (!std::isfinite(point.criticalDiameterCm)) {

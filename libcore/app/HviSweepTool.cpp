@@ -20,17 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const CLI::Validator kPositiveFinite(
-    [](const std::string& text) {
-        try {
-            const double v = std::stod(text);
-            return std::isfinite(v) && v > 0.0 ? std::string() : "must be a finite number > 0";
-        } catch (const std::exception&) {
-            return std::string("is not a number");
-        }
-    },
-    "> 0");
-
 // The equation's curve is drawn over this speed range [km/s] at this step.
 constexpr double kCurveFromKmS = 1.0, kCurveToKmS = 15.0, kCurveStepKmS = 0.25;
 
@@ -113,13 +102,14 @@ void HviSweepTool::addOptions(CLI::App& app) {
                    "init: ble-size's constraints of the same shield (the start and the curve)");
     app.add_option("--parameter", m_parameter, "init: diameter (default) or rear_wall")
         ->check(CLI::IsMember({"diameter", "rear_wall"}));
-    app.add_option("--speed-km-s", m_speed, "init: impact speed [km/s]")->check(kPositiveFinite);
+    app.add_option("--speed-km-s", m_speed, "init: impact speed [km/s]")
+        ->check(CLI::PositiveNumber);
     app.add_option("--tolerance-mm", m_tolerance,
                    "init: bracket width at which the search stops [mm] (default 0.1, >= 0.001)")
-        ->check(kPositiveFinite);
+        ->check(CLI::PositiveNumber);
     app.add_option("--step-factor", m_stepFactor,
                    "init: outward step while the verdict has not flipped (default 1.25, > 1)")
-        ->check(kPositiveFinite);
+        ->check(CLI::PositiveNumber);
     app.add_option("--max-points", m_maxPoints, "init: runs before giving up (default 12)")
         ->check(CLI::Range(2, 100));
     app.add_option("--out-dir", m_outDir, "init: the sweep directory; report: the speeds' parent");

@@ -68,12 +68,6 @@ struct SpallStrength {
         return strengthGPa * std::pow(strainRatePerUs / referenceStrainRatePerUs, rateExponent);
     }
 
-    /// True when the largest principal stress (tension positive) of pressure P and deviator
-    /// S exceeds the spall strength.
-    bool exceeded(const StressDeviator& s, double pressure, double strainRatePerUs) const noexcept {
-        return s.maxPrincipal() - pressure > strengthAt(strainRatePerUs);
-    }
-
     /// The point's damage after a step of dt [us] at deviator S and pressure P: 1 beyond the
     /// strength, else `damage` plus the cumulative part's increment (capped at 1).
     double damageAfter(double damage, const StressDeviator& s, double pressure,

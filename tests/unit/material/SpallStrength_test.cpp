@@ -22,21 +22,28 @@ SpallStrength spallAt(double strengthGPa, double rateExponent = 0.0,
     return s;
 }
 
+/// Whether a sound point fails at once (the instantaneous criterion; no step, so no
+/// cumulative damage).
+bool failsAtOnce(const SpallStrength& spall, const StressDeviator& s, double pressure,
+                 double strainRatePerUs) {
+    return spall.damageAfter(0.0, s, pressure, strainRatePerUs, 0.0) == 1.0;
+}
+
 } // namespace
 
 TEST(SpallStrength, PrincipalTensionBeyondTheStrengthFails) {
     const SpallStrength spall = spallAt(1.2);
     const StressDeviator none{};
-    EXPECT_FALSE(spall.exceeded(none, -1.19, 1.0));
-    EXPECT_FALSE(spall.exceeded(none, -1.2, 1.0)); // at the strength: not beyond it
-    EXPECT_TRUE(spall.exceeded(none, -1.21, 1.0));
-    EXPECT_FALSE(spall.exceeded(none, 5.0, 1.0)); // compression never spalls
+    EXPECT_FALSE(failsAtOnce(spall, none, -1.19, 1.0));
+    EXPECT_FALSE(failsAtOnce(spall, none, -1.2, 1.0)); // at the strength: not beyond it
+    EXPECT_TRUE(failsAtOnce(spall, none, -1.21, 1.0));
+    EXPECT_FALSE(failsAtOnce(spall, none, 5.0, 1.0)); // compression never spalls
     // Uniaxial strain yielding in tension: S_zz = 2/3 Y, S_rr = S_thth = -1/3 Y; with
     // Y = 0.3 GPa a mean tension of 1.05 GPa is a longitudinal tension of 1.25 GPa.
     const StressDeviator yielding{.zz = 0.2, .rr = -0.1, .rz = 0.0};
     EXPECT_TRUE(near("sigma_1", yielding.maxPrincipal() + 1.05, 1.25, 0.0, 1e-15));
-    EXPECT_TRUE(spall.exceeded(yielding, -1.05, 1.0));
-    EXPECT_FALSE(spall.exceeded(yielding, -0.95, 1.0));
+    EXPECT_TRUE(failsAtOnce(spall, yielding, -1.05, 1.0));
+    EXPECT_FALSE(failsAtOnce(spall, yielding, -0.95, 1.0));
 }
 
 TEST(SpallStrength, PrincipalValuesOfAnRzDeviator) {
@@ -57,8 +64,8 @@ TEST(SpallStrength, PowerLawRateTerm) {
     // At and below the reference rate: the reference strength.
     EXPECT_EQ(spall.strengthAt(1.0e-2), 1.0);
     EXPECT_EQ(spall.strengthAt(1.0e-5), 1.0);
-    EXPECT_TRUE(spall.exceeded(StressDeviator{}, -1.2, 1.0e-3));
-    EXPECT_FALSE(spall.exceeded(StressDeviator{}, -1.2, 1.0));
+    EXPECT_TRUE(failsAtOnce(spall, StressDeviator{}, -1.2, 1.0e-3));
+    EXPECT_FALSE(failsAtOnce(spall, StressDeviator{}, -1.2, 1.0));
 }
 
 TEST(SpallStrength, CumulativeDamageFailsAfterTheTulerButcherTime) {
