@@ -9,11 +9,12 @@ $(OUT)/%/scene.json: $(OUT)/%/panel.json
 	  $(END_TIME_FLAG) -o $@ 2>$(OUT)/$*/scene.log
 
 # The run writes run.part.h5, renamed to run.h5 once complete: an interrupted run leaves
-# run.part.h5 and its checkpoint (make deletes only the target), and the next make resumes
-# it with the history it already has, rather than restarting.
+# its checkpoint beside run.part.h5 (stopped by a signal) or beside the run.part.h5.tmp.PID
+# a run killed outright leaves (make deletes only the target), and the next make resumes it
+# with the history it already has, rather than restarting.
 $(OUT)/%/run.h5: $(OUT)/%/scene.json
 	@set -e; start=$$(date +%s); part=$(OUT)/$*/run.part.h5; \
-	resume=$$([ -f $(OUT)/$*/run.part.ckpt.h5 ] && [ -f $$part ] && echo --resume || true); \
+	resume=$$([ -f $(OUT)/$*/run.part.ckpt.h5 ] && echo --resume || true); \
 	$(LAUNCH) $(BIN)/hvi-run/hvi-run $< -o $$part --threads $(THREADS) $(MATERIALS_FLAG) -q $$resume; \
 	mv -f $$part $@; \
 	if [ -f $(OUT)/$*/run.part.xmf ]; then \

@@ -92,7 +92,9 @@ void HviRunTool::addOptions(CLI::App& app) {
                    "Extra material library JSON laid over the built-in one")
         ->check(CLI::ExistingFile);
     app.add_flag("--resume", m_resume,
-                 "Continue from RUN.ckpt.h5 (left by an interrupted or checkpointed run)");
+                 "Continue from RUN.ckpt.h5 (left by an interrupted or checkpointed run), "
+                 "keeping the snapshots up to it from RUN (or from the RUN.tmp.PID a run "
+                 "killed outright left)");
     app.add_option("--checkpoint-every-s", m_checkpointEvery,
                    "Wall time between checkpoints [s] (0 = only on interrupt; default 300)")
         ->check(CLI::NonNegativeNumber);

@@ -13,6 +13,7 @@ json Criteria::toJson() const {
             {"hole_edge_bins", holeEdgeBins},
             {"min_crossing_items", minCrossingItems},
             {"link_spacings", linkSpacings},
+            {"join_spacings", joinSpacings},
             {"axis_band_spacings", axisBandSpacings},
             {"bulge_spacings", bulgeSpacings},
             {"rest_speed_km_s", restSpeedKmS},

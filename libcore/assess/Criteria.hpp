@@ -40,6 +40,13 @@ struct Criteria {
     /// Failed items closer than this many particle spacings are connected (1.5 links the 8
     /// lattice neighbours, diagonal ones at sqrt(2) spacings).
     double linkSpacings = 1.5;
+    /// Sound rear-wall items closer than this many spacings *at their current positions* are
+    /// joined (failed ones and eroded-element particles only within linkSpacings): the wall
+    /// is the joined set holding most of its material, and a scab is detached once nothing
+    /// joins it. 3 keeps lattice neighbours joined up to 100 % stretch (a diagonal pair at
+    /// sqrt(2) spacings stretched twice is 2.83 apart), so a thinning bulge or a bent petal
+    /// is not cut from the wall.
+    double joinSpacings = 3.0;
     /// A perforation lying wholly within this many spacings of the axis is flagged as confined
     /// to the axis (axisymmetric runs). 3: the particle columns within one kernel support
     /// (2 h = 2.6 spacings at the default h = 1.3 spacings) of the axis, whose SPH sums reach

@@ -1,10 +1,12 @@
 #include "assess/RearWallPerforation.hpp"
 
+#include "assess/ConnectedSets.hpp"
 #include "assess/FailurePath.hpp"
 #include "assess/MaterialState.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -30,6 +32,48 @@ double median(std::vector<double> values) {
     const auto mid = values.begin() + static_cast<long>(values.size() / 2);
     std::nth_element(values.begin(), mid, values.end());
     return *mid;
+}
+
+/// The items of the wall as it stands (see the surface in rearWallPerforation): the joined
+/// set of its alive items with the most of its own material. Its sound material joins
+/// across Criteria::joinSpacings (stretched, it is still whole); failed material and the
+/// particles of eroded elements only when touching (linkSpacings), so a stream of them
+/// leaving the back face does not carry the wall with it.
+std::vector<std::size_t> wallAsItStands(const MaterialItems& items, const ShieldLayout& layout,
+                                        std::size_t wall, const Criteria& criteria) {
+    std::vector<std::size_t> index;
+    std::vector<double> z, r;
+    std::vector<std::uint8_t> sound;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (belongsTo(items, i, wall) && items.alive[i]) {
+            index.push_back(i);
+            z.push_back(items.z[i]);
+            r.push_back(items.r[i]);
+            sound.push_back(isBodyMaterial(items, i, layout, wall) &&
+                            !isFailed(items, i, layout, criteria));
+        }
+    }
+    if (index.empty()) {
+        return index;
+    }
+    const double s = layout.bodies[wall].spacing;
+    const std::vector<std::size_t> label =
+        connectedSets(z, r, criteria.linkSpacings * s, sound, criteria.joinSpacings * s);
+    std::vector<double> own(index.size(), 0.0); // the wall's own mass per set, by label
+    for (std::size_t k = 0; k < index.size(); ++k) {
+        if (isBodyMaterial(items, index[k], layout, wall)) {
+            own[label[k]] += items.mass[index[k]];
+        }
+    }
+    const std::size_t main =
+        static_cast<std::size_t>(std::max_element(own.begin(), own.end()) - own.begin());
+    std::vector<std::size_t> standing;
+    for (std::size_t k = 0; k < index.size(); ++k) {
+        if (label[k] == main) {
+            standing.push_back(index[k]);
+        }
+    }
+    return standing;
 }
 
 /// Bulge, dent, failed material by half of the wall, and the wall's speed: the grades short
@@ -113,15 +157,13 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
     result.throughThicknessFailure = path.crosses;
     result.failedItems = path.failedItems;
 
-    // The current rear surface per radial bin: the top of the wall's contiguous material in
-    // the bin (failed or not, gaps no wider than the link distance), counted from the
-    // rearmost item of the wall's own material (an FE wall's elements) that has not failed,
-    // or from the item nearest the wall's mid-plane where all have. Failed wall material
-    // still in place is wall, and so are the particles of eroded elements that stay in
-    // contact with it; a fragment that has left it (detached spall, front-face ejecta, the
-    // particles of eroded elements flying off, however sound) is not.
+    // The current rear surface per radial bin: the rearmost item, in the bin, of the wall as
+    // it stands -- the set of the wall's alive items (its material, sound or failed in place,
+    // and the particles of its eroded elements still touching it) joined at their current
+    // positions (Criteria::joinSpacings) that holds most of the wall's own material. A scab or
+    // fragment that has left the wall is a set of its own however sound its material, so it
+    // is spall, not surface; a bin where the wall has nothing left uses the initial rear face.
     const double s = body.spacing;
-    const double link = criteria.linkSpacings * s;
     const double extent = body.rMax - body.rMin;
     WallBins bins;
     bins.rMin = body.rMin;
@@ -130,44 +172,19 @@ std::optional<RearWallPerforation> rearWallPerforation(const MaterialItems& item
     const long count = bins.count;
     const auto n = static_cast<std::size_t>(count);
     auto binOf = [&](double r) { return bins.binOf(r); };
-    std::vector<std::vector<double>> wallZ(n);
-    std::vector<double> topSound(n, -std::numeric_limits<double>::infinity());
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (!belongsTo(items, i, wall) || !items.alive[i]) {
-            continue;
-        }
+    const std::vector<std::size_t> standing = wallAsItStands(items, layout, wall, criteria);
+    std::vector<double> surface(n, -std::numeric_limits<double>::infinity());
+    for (std::size_t i : standing) {
         const long k = binOf(items.r[i]);
-        if (k < 0 || k >= count) {
-            continue;
-        }
-        const auto kk = static_cast<std::size_t>(k);
-        wallZ[kk].push_back(items.z[i]);
-        if (isBodyMaterial(items, i, layout, wall) && !isFailed(items, i, layout, criteria)) {
-            topSound[kk] = std::max(topSound[kk], items.z[i]);
+        if (k >= 0 && k < count) {
+            auto& top = surface[static_cast<std::size_t>(k)];
+            top = std::max(top, items.z[i]);
         }
     }
-    const double midPlane = 0.5 * (body.zFront + body.zRear);
-    std::vector<double> surface(n, body.zRear);
-    for (std::size_t k = 0; k < n; ++k) {
-        auto& zs = wallZ[k];
-        if (zs.empty()) {
-            continue; // nothing left here: the initial rear face
+    for (double& top : surface) {
+        if (!std::isfinite(top)) {
+            top = body.zRear;
         }
-        std::sort(zs.begin(), zs.end());
-        std::size_t j = 0;
-        if (std::isfinite(topSound[k])) {
-            j = static_cast<std::size_t>(std::find(zs.begin(), zs.end(), topSound[k]) - zs.begin());
-        } else {
-            for (std::size_t m = 1; m < zs.size(); ++m) {
-                if (std::fabs(zs[m] - midPlane) < std::fabs(zs[j] - midPlane)) {
-                    j = m;
-                }
-            }
-        }
-        while (j + 1 < zs.size() && zs[j + 1] - zs[j] <= link) {
-            ++j;
-        }
-        surface[k] = zs[j];
     }
     bins.surface = surface;
 

@@ -7,18 +7,20 @@
 //  (b) material crossed: at least minCrossingItems (3) alive items of bodies in front of the
 //      rear wall (projectile, bumper, core) are beyond the wall's *current* rear surface by
 //      more than one particle spacing and moving outward (Vz > 0). The rear surface is taken
-//      per radial bin (one spacing wide) as the top of the wall material still in place
-//      there: from the rearmost wall item that has not failed (or, where all have, the wall
-//      item nearest the wall's mid-plane) up through contiguous wall items, failed or not, no
-//      more than 1.5 spacings apart. So a bulging wall with debris in its dent is not
-//      perforated, failed wall material still in place still holds debris back, and a bin
-//      with no wall material left uses the wall's initial rear face.
+//      per radial bin (one spacing wide) as the rearmost item there of the wall as it
+//      stands: the set of the wall's alive items (sound, failed in place, or eroded-element
+//      particles still touching it) joined at their current positions within
+//      Criteria::joinSpacings that holds most of the wall's own material (ConnectedSets.hpp).
+//      So a bulging wall with debris in its dent is not perforated, failed wall material
+//      still in place still holds debris back, a scab that has left the wall is not its
+//      surface however sound it is, and a bin with no wall material left uses the wall's
+//      initial rear face.
 // The damage short of perforation, graded as the tests grade it (DamageGrade.hpp):
 //  * detached spall: at least minCrossingItems items of the rear wall's own body beyond that
 //    surface by more than two spacings and moving outward (vz > 0): material that has left
-//    the wall's back face. The particles of eroded wall elements count (an eroded element
-//    behind the back face, flying away, is wall material ejected from it); material of the
-//    wall thrown back off its front face does not (it is in front of the surface, vz < 0);
+//    the wall's back face, a whole scab included. The particles of eroded wall elements count (an
+//    eroded element behind the back face, flying away, is wall material ejected from it); material
+//    of the wall thrown back off its front face does not (it is in front of the surface, vz < 0);
 //  * bulge: the wall's rear row has moved outward by at least one spacing more than the
 //    outer quarter of that row (the whole wall drifting with the momentum it took, free at
 //    its edge, is no bulge); bulgeMm is the largest such displacement. The wall here is its

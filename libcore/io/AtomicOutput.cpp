@@ -2,6 +2,10 @@
 
 #include "core/Error.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <system_error>
@@ -49,6 +53,34 @@ void AtomicOutput::commit() {
         }
     }
     m_committed = true;
+}
+
+std::optional<fs::path> orphanedTemporary(const fs::path& finalPath) {
+    const fs::path dir = finalPath.parent_path().empty() ? fs::path(".") : finalPath.parent_path();
+    const std::string prefix = finalPath.filename().string() + ".tmp.";
+    std::optional<fs::path> newest;
+    fs::file_time_type newestTime{};
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        const std::string pid = name.substr(std::min(prefix.size(), name.size()));
+        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+            pid.size() > 9 ||
+            !std::all_of(pid.begin(), pid.end(), [](unsigned char c) { return std::isdigit(c); })) {
+            continue;
+        }
+        const auto id = static_cast<pid_t>(std::stol(pid));
+        if (id == ::getpid() || ::kill(id, 0) == 0 || errno != ESRCH) {
+            continue; // its writer runs (or may: not ours to signal)
+        }
+        std::error_code timeError;
+        const auto when = fs::last_write_time(it->path(), timeError);
+        if (!timeError && (!newest || when > newestTime)) {
+            newest = it->path();
+            newestTime = when;
+        }
+    }
+    return newest;
 }
 
 void writeTextAtomically(const fs::path& path, const std::string& text) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace hvi::io {
@@ -29,6 +30,12 @@ private:
     std::filesystem::path m_tempPath;
     bool m_committed = false;
 };
+
+/// The temporary that a writer of `finalPath` killed outright (SIGKILL, power loss) left
+/// behind: a NAME.tmp.PID beside it whose process no longer runs; the newest if several,
+/// nullopt if none. A PID that another process has taken since counts as running, so a
+/// temporary is never taken from a writer that may still be alive.
+std::optional<std::filesystem::path> orphanedTemporary(const std::filesystem::path& finalPath);
 
 /// Writes `text` to `path` atomically ("-" = stdout). Throws RuntimeFailure on I/O error.
 void writeTextAtomically(const std::filesystem::path& path, const std::string& text);

@@ -31,7 +31,8 @@
 // "partial"), and the run can be resumed from its checkpoint. A run that *fails* (blow-up,
 // write error) throws instead and leaves nothing. A run killed outright (SIGKILL, power
 // loss) leaves NAME.tmp.PID, readable up to the last flush() (the reader opens it; it just
-// has no /run group).
+// has no /run group); a resumed run takes its snapshots up to the checkpoint from it
+// (io::orphanedTemporary) and removes it.
 //
 // Not thread-safe; call from the solver's main thread, outside OpenMP parallel regions.
 #pragma once

@@ -1,6 +1,8 @@
 #include "solver/RunLoop.hpp"
 
 #include "core/Error.hpp"
+#include "core/Fingerprint.hpp"
+#include "io/AtomicOutput.hpp"
 #include "io/Checkpoint.hpp"
 #include "io/RunFileReader.hpp"
 
@@ -84,8 +86,8 @@ io::HistoryRow historyRow(const Simulation& sim) {
     row.kineticEnergy = t.kinetic;
     row.internalEnergy = t.internal;
     row.totalEnergy = t.kinetic + t.internal;
-    row.energyError = io::relativeEnergyError(row.totalEnergy, t.deletedEnergy,
-                                              sim.initialEnergy());
+    row.energyError =
+        io::relativeEnergyError(row.totalEnergy, t.deletedEnergy, sim.initialEnergy());
     row.deletedEnergy = t.deletedEnergy;
     row.mass = t.mass;
     row.momentumZ = t.momentumZ;
@@ -117,8 +119,8 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
     io::CheckpointState s;
     s.timeUs = sim.time();
     s.step = sim.step();
-    s.doubles = {{"z", ps.z},   {"r", ps.r},     {"vz", ps.vz}, {"vr", ps.vr}, {"mass", ps.mass},
-                 {"h", ps.h},   {"rho", ps.rho}, {"e", ps.e}};
+    s.doubles = {{"z", ps.z},       {"r", ps.r}, {"vz", ps.vz},   {"vr", ps.vr},
+                 {"mass", ps.mass}, {"h", ps.h}, {"rho", ps.rho}, {"e", ps.e}};
     if (ps.hasStrength()) {
         s.doubles["szz"] = ps.szz;
         s.doubles["srr"] = ps.srr;
@@ -315,6 +317,68 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
                      feElement, contactDt, std::move(flags));
 }
 
+namespace {
+
+/// What a checkpoint must share with the run that resumes it: the scene and the material
+/// library as resolved, less what only says how long to run and what to write (the end time,
+/// the step cap, the stop rules, the output cadence), which a resumed run may change.
+std::string sceneFingerprint(const std::string& sceneText, const std::string& materialsText) {
+    nlohmann::json scene = nlohmann::json::parse(sceneText);
+    if (scene.contains("run") && scene["run"].is_object()) {
+        for (const char* key : {"end_time_us", "max_steps", "stop_debris_speed_km_s",
+                                "stop_no_new_penetration_us", "stop_on_rear_wall_perforation"}) {
+            scene["run"].erase(key);
+        }
+    }
+    scene.erase("output");
+    return core::fingerprint(scene.dump() + '\n' + materialsText);
+}
+
+/// Copies the snapshots and history rows of `previous` (an interrupted run's file) up to
+/// the checkpoint's time into `writer`; returns the time of the next snapshot due (0 when
+/// none was copied).
+double carryOver(const std::filesystem::path& previousFile, double checkpointTimeUs,
+                 double snapshotEvery, io::RunFileWriter& writer) {
+    double nextSnapshot = 0.0;
+    io::RunFileReader previous(previousFile);
+    for (std::size_t k = 0; k < previous.snapshots().size(); ++k) {
+        auto snap = previous.readSnapshot(static_cast<int>(k));
+        if (snap.info.timeUs <= checkpointTimeUs + 1e-12) {
+            if (snap.fe) {
+                const io::FeFieldsView feView = io::viewOf(*snap.fe);
+                writer.writeSnapshot(snap.info.timeUs, snap.info.step, io::viewOf(snap.particles),
+                                     &feView);
+            } else {
+                writer.writeSnapshot(snap.info.timeUs, snap.info.step, io::viewOf(snap.particles));
+            }
+            nextSnapshot = snap.info.timeUs + snapshotEvery;
+        }
+    }
+    const io::HistoryColumns h = previous.readHistory();
+    for (std::size_t k = 0; k < h.timeUs.size(); ++k) {
+        if (h.timeUs[k] <= checkpointTimeUs + 1e-12) {
+            io::HistoryRow row;
+            row.timeUs = h.timeUs[k];
+            row.dtUs = h.dtUs[k];
+            row.step = h.step[k];
+            row.kineticEnergy = h.kineticEnergy[k];
+            row.internalEnergy = h.internalEnergy[k];
+            row.totalEnergy = h.totalEnergy[k];
+            row.energyError = h.energyError[k];
+            row.deletedEnergy = h.deletedEnergy[k];
+            row.mass = h.mass[k];
+            row.momentumZ = h.momentumZ[k];
+            row.aliveCount = h.aliveCount[k];
+            row.deletedCount = h.deletedCount[k];
+            row.activeCount = h.activeCount[k];
+            writer.appendHistory(row);
+        }
+    }
+    return nextSnapshot;
+}
+
+} // namespace
+
 RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
                            const std::string& materialsText, const nlohmann::json& provenance,
                            const RunOptions& options,
@@ -325,53 +389,45 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     summary.particles = sim.particles().size();
     const auto checkpointPath = io::checkpointPathFor(options.runFile);
 
+    const std::string fingerprint = sceneFingerprint(sceneText, materialsText);
+    auto checkpointNow = [&]() {
+        io::CheckpointState state = checkpointOf(sim, summary.maxEnergyError);
+        state.extra["scene_fingerprint"] = fingerprint;
+        io::writeCheckpoint(checkpointPath, state);
+    };
     io::RunFileWriter writer(options.runFile, sceneText, materialsText, provenance);
     double nextSnapshot = 0.0;
     if (options.resume && std::filesystem::exists(checkpointPath)) {
         const io::CheckpointState state = io::readCheckpoint(checkpointPath);
+        // A checkpoint of another scene with the same point count would restore without a
+        // word, and the run file's /scene would describe a run it did not come from.
+        if (state.extra.contains("scene_fingerprint") &&
+            state.extra["scene_fingerprint"] != fingerprint) {
+            throw InputError(checkpointPath.string(), "/extra/scene_fingerprint",
+                             "the checkpoint was written by a run of another scene or material "
+                             "library (fingerprint " +
+                                 state.extra["scene_fingerprint"].get<std::string>() +
+                                 ", this run's " + fingerprint + ")",
+                             "--resume with the scene and --materials of the interrupted run, "
+                             "or delete the checkpoint to start afresh");
+        }
         restoreCheckpoint(sim, state);
         summary.maxEnergyError = state.extra.value("max_energy_error", 0.0);
         summary.resumed = true;
-        // Carry the snapshots and history of the interrupted run into the new file.
+        // Carry the snapshots and history of the interrupted run into the new file: its run
+        // file (stopped by a signal), or the temporary it left when it was killed outright.
         if (std::filesystem::exists(options.runFile)) {
-            io::RunFileReader previous(options.runFile);
-            for (std::size_t k = 0; k < previous.snapshots().size(); ++k) {
-                auto snap = previous.readSnapshot(static_cast<int>(k));
-                if (snap.info.timeUs <= state.timeUs + 1e-12) {
-                    if (snap.fe) {
-                        const io::FeFieldsView feView = io::viewOf(*snap.fe);
-                        writer.writeSnapshot(snap.info.timeUs, snap.info.step,
-                                             io::viewOf(snap.particles), &feView);
-                    } else {
-                        writer.writeSnapshot(snap.info.timeUs, snap.info.step,
-                                             io::viewOf(snap.particles));
-                    }
-                    nextSnapshot = snap.info.timeUs + scene.output.snapshotEvery;
-                }
-            }
-            const io::HistoryColumns h = previous.readHistory();
-            for (std::size_t k = 0; k < h.timeUs.size(); ++k) {
-                if (h.timeUs[k] <= state.timeUs + 1e-12) {
-                    io::HistoryRow row;
-                    row.timeUs = h.timeUs[k];
-                    row.dtUs = h.dtUs[k];
-                    row.step = h.step[k];
-                    row.kineticEnergy = h.kineticEnergy[k];
-                    row.internalEnergy = h.internalEnergy[k];
-                    row.totalEnergy = h.totalEnergy[k];
-                    row.energyError = h.energyError[k];
-                    row.deletedEnergy = h.deletedEnergy[k];
-                    row.mass = h.mass[k];
-                    row.momentumZ = h.momentumZ[k];
-                    row.aliveCount = h.aliveCount[k];
-                    row.deletedCount = h.deletedCount[k];
-                    row.activeCount = h.activeCount[k];
-                    writer.appendHistory(row);
-                }
-            }
+            nextSnapshot =
+                carryOver(options.runFile, state.timeUs, scene.output.snapshotEvery, writer);
+        } else if (const auto orphan = io::orphanedTemporary(options.runFile)) {
+            nextSnapshot = carryOver(*orphan, state.timeUs, scene.output.snapshotEvery, writer);
+            std::error_code ignored;
+            std::filesystem::remove(*orphan, ignored); // all it held is in the new file now
+            log("carried the snapshots of " + orphan->string() +
+                " (a run killed outright) into the new file");
         }
-        log("resumed from " + checkpointPath.string() + " at t = " +
-            std::to_string(sim.time()) + " us, step " + std::to_string(sim.step()));
+        log("resumed from " + checkpointPath.string() + " at t = " + std::to_string(sim.time()) +
+            " us, step " + std::to_string(sim.step()));
     }
 
     std::vector<double> deviator;
@@ -450,7 +506,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         if (options.checkpointEverySeconds > 0 &&
             secondsSince(lastCheckpoint) >= options.checkpointEverySeconds) {
             writer.flush();
-            io::writeCheckpoint(checkpointPath, checkpointOf(sim, summary.maxEnergyError));
+            checkpointNow();
             lastCheckpoint = Clock::now();
         }
     }
@@ -462,20 +518,20 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         snapshot(); // the final state, unless it was just written
     }
     const Totals t = sim.totals();
-    nlohmann::json facts = {{"wall_time_s", summary.wallSeconds},
-                            {"threads", options.threads},
-                            {"steps", sim.step()},
-                            {"end_time_us", sim.time()},
-                            {"particles", summary.particles},
-                            {"alive_particles", t.alive},
-                            {"deleted_runaway", sim.runawayDeleted()},
-                            {"deleted_out_of_domain", sim.outOfDomainDeleted()},
-                            {"eroded_elements", t.erodedElements},
-                            {"max_abs_energy_error", summary.maxEnergyError},
-                            {"particle_spacing_mm", scene.sph.particleSpacing},
-                            {"resumed", summary.resumed},
-                            {"particle_steps_per_s",
-                             summary.particleSteps / std::max(summary.wallSeconds, 1e-9)}};
+    nlohmann::json facts = {
+        {"wall_time_s", summary.wallSeconds},
+        {"threads", options.threads},
+        {"steps", sim.step()},
+        {"end_time_us", sim.time()},
+        {"particles", summary.particles},
+        {"alive_particles", t.alive},
+        {"deleted_runaway", sim.runawayDeleted()},
+        {"deleted_out_of_domain", sim.outOfDomainDeleted()},
+        {"eroded_elements", t.erodedElements},
+        {"max_abs_energy_error", summary.maxEnergyError},
+        {"particle_spacing_mm", scene.sph.particleSpacing},
+        {"resumed", summary.resumed},
+        {"particle_steps_per_s", summary.particleSteps / std::max(summary.wallSeconds, 1e-9)}};
     if (reason) {
         summary.stopReason = *reason;
         summary.complete = true;
@@ -486,7 +542,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     } else {
         summary.stopReason = "interrupted";
         facts["stop_reason"] = "interrupted";
-        io::writeCheckpoint(checkpointPath, checkpointOf(sim, summary.maxEnergyError));
+        checkpointNow();
         writer.abandon(facts);
         log("interrupted at t = " + std::to_string(sim.time()) + " us; checkpoint " +
             checkpointPath.string() + " (continue with --resume)");

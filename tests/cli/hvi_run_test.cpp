@@ -2,6 +2,7 @@
 // and an XDMF sidecar; bad scenes give exit 2, a pointer and no output; --benchmark prints
 // throughput.
 #include "RunTool.hpp"
+#include "io/AtomicOutput.hpp"
 #include "io/RunFileReader.hpp"
 
 #include <cmath>
@@ -85,6 +86,60 @@ TEST(HviRunCli, ResumeWithoutACheckpointIsRefused) {
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("--resume: no checkpoint"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(run));
+}
+
+// A run killed outright (SIGKILL, power loss) leaves its checkpoint and the RUN.tmp.PID it
+// was writing, and no RUN. --resume used to drop the snapshots before the checkpoint (and make
+// did not resume at all); now it carries them over from that temporary and removes it. A
+// checkpoint of another scene is refused.
+TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
+    std::string text = kScene;
+    auto set = [&text](const std::string& from, const std::string& to) {
+        text.replace(text.find(from), from.size(), to);
+    };
+    set("\"end_time_us\": 0.3", "\"end_time_us\": 8.0");
+    set("\"snapshot_every_us\": 0.1", "\"snapshot_every_us\": 1.0");
+    const auto scene = writeTemp("killed.json", text);
+    const auto run = tempPath("killed.h5");
+    const auto checkpoint = tempPath("killed.ckpt.h5");
+    std::filesystem::remove(run);
+    std::filesystem::remove(checkpoint);
+    // Start it, wait for its first checkpoint (0.3 s of wall time in), then kill -9.
+    const std::string script =
+        toolPath("hvi-run").string() + " " + scene.string() + " -o " + run.string() +
+        " --threads 1 -q --checkpoint-every-s 0.3 & p=$!; i=0; while [ ! -f " +
+        checkpoint.string() + " ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i+1)); done; " +
+        "kill -9 $p; wait $p; exit 0";
+    ASSERT_EQ(std::system(script.c_str()), 0);
+    ASSERT_TRUE(std::filesystem::exists(checkpoint)) << "no checkpoint within 60 s";
+    if (std::filesystem::exists(run)) {
+        GTEST_SKIP() << "the run finished before it could be killed (machine too fast)";
+    }
+    ASSERT_TRUE(hvi::io::orphanedTemporary(run).has_value());
+
+    // A checkpoint of another scene with the same point count (the projectile faster) is
+    // refused, and nothing is lost by trying (issue #25, item 7).
+    std::string other = text;
+    other.replace(other.find("\"z_km_s\": 3.0"), 13, "\"z_km_s\": 3.5");
+    const auto otherScene = writeTemp("killed-other.json", other);
+    const auto refused =
+        runTool("hvi-run", otherScene.string() + " -o " + run.string() + " --threads 1 --resume");
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("/extra/scene_fingerprint: "), std::string::npos) << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(run));
+    ASSERT_TRUE(hvi::io::orphanedTemporary(run).has_value());
+
+    const auto r =
+        runTool("hvi-run", scene.string() + " -o " + run.string() + " --threads 1 --resume");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("killed outright"), std::string::npos) << r.err;
+    EXPECT_FALSE(hvi::io::orphanedTemporary(run).has_value());
+    hvi::io::RunFileReader reader(run.string());
+    ASSERT_EQ(reader.snapshots().size(), 9u); // t = 0, 1, ..., 8: none lost, none twice
+    EXPECT_EQ(reader.snapshots().front().timeUs, 0.0);
+    const auto history = reader.readHistory();
+    ASSERT_FALSE(history.timeUs.empty());
+    EXPECT_EQ(history.timeUs.front(), 0.0);
 }
 
 TEST(HviRunCli, BenchmarkPrintsThroughput) {

@@ -196,16 +196,25 @@ TEST(DamageGrade, AWallDriftingAsAWholeIsNoBulge) {
 }
 
 TEST(DamageGrade, ABulgeFarBeyondTheWallsThicknessIsStillTheWall) {
-    // The centre bulged 3 mm (three wall thicknesses) and still moves at 0.5 km/s: a bulge,
-    // and not at rest, so an NP is provisional.
+    // The centre bulged into a dome 3 mm deep (three wall thicknesses; 3 (1 - r^2/16) within
+    // r < 4, stretched by at most 80 %) and still moves at 0.5 km/s: a bulge, and not at
+    // rest, so an NP is provisional. (A block moved 3 mm with a sheared edge would be a plug
+    // that has left the wall.)
     SyntheticRun run(test::whippleScene());
     auto& snap = run.addSnapshot(1.0);
     run.forBody(snap, "projectile", [&](std::size_t i) { snap.vz[i] = 0.0; });
-    moveWall(run, snap, 3.0, 0.5, 0.0, [](double, double r0) { return r0 < 1.0; });
+    run.forBody(snap, "rear", [&](std::size_t i) {
+        const double r0 = run.initial.r[i];
+        if (r0 < 4.0) {
+            snap.z[i] += 3.0 * (1.0 - r0 * r0 / 16.0);
+            snap.vz[i] = 0.5;
+        }
+    });
     const auto a = test::assessSynthetic(run, "grade_far_bulge");
     const auto v = assess::verdictJson(a);
     EXPECT_EQ(v["damage_grade"], "bulge_or_attached_spall");
-    EXPECT_NEAR(v["rear_wall"]["bulge_mm"].get<double>(), 3.0, 1e-9);
+    // The axis column (r0 = 0.025) moved 3 (1 - 0.025^2/16) mm.
+    EXPECT_NEAR(v["rear_wall"]["bulge_mm"].get<double>(), 3.0 * (1.0 - 0.025 * 0.025 / 16.0), 1e-9);
     EXPECT_EQ(v["verdict_final"], false);
     EXPECT_NEAR(v["rear_wall"]["end_wall_speed_km_s"].get<double>(), 0.5, 1e-12);
 }

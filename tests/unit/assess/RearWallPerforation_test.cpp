@@ -145,13 +145,16 @@ TEST(RearWallPerforation, TwoStrayParticlesAreNot) {
 }
 
 TEST(RearWallPerforation, BulgedUnbrokenWallHoldingDebrisIsNot) {
-    // The wall within r < 1 bulges 1.5 mm (more than its thickness) without failing; debris
-    // rests in the dent, behind the wall's original rear face but in front of its material.
+    // The wall within r < 2 bulges into a dome 1.5 mm deep at the axis (more than its
+    // thickness) without failing; debris rests in the dent, behind the wall's original rear
+    // face but in front of its material. (A block moved 1.5 mm with a sheared edge would be a
+    // plug that has left the wall: a perforation.)
     SyntheticRun run(test::whippleScene());
     auto& snap = run.addSnapshot(1.0);
     run.forBody(snap, "rear", [&](std::size_t i) {
-        if (run.initial.r[i] < 1.0) {
-            snap.z[i] += 1.5;
+        const double r0 = run.initial.r[i];
+        if (r0 < 2.0) {
+            snap.z[i] += 1.5 * (1.0 - 0.25 * r0 * r0);
             snap.vz[i] = 0.2;
         }
     });
@@ -192,6 +195,49 @@ TEST(RearWallPerforation, DetachedSpallIsReportedButIsNotPerforation) {
     });
     const auto a = assessWall(run, "wall_spall");
     EXPECT_TRUE(a.detachedSpall);
+    EXPECT_FALSE(*a.rearWallPerforated);
+}
+
+TEST(RearWallPerforation, ASoundScabThatLeftTheWallIsDetachedSpallWithItsMass) {
+    // A scab: the last 8 rows within r < 1 are sound but 1 mm behind the wall, flying off;
+    // the row under them failed in place. The wall's rear surface is the wall's, not the
+    // scab's: the scab is detached spall, all of its mass, and no bulge.
+    SyntheticRun run(test::whippleScene());
+    auto& snap = run.addSnapshot(1.0);
+    double scabMass = 0.0;
+    run.forBody(snap, "rear", [&](std::size_t i) {
+        const long k = row(run.initial.z[i]);
+        if (run.initial.r[i] < 1.0 && k >= 12) {
+            snap.z[i] += 1.0;
+            snap.vz[i] = 0.3;
+            scabMass += snap.mass[i];
+        } else if (run.initial.r[i] < 1.0 && k == 11) {
+            snap.damage[i] = 1.0;
+        }
+    });
+    const auto a = assessWall(run, "wall_scab");
+    EXPECT_TRUE(a.detachedSpall);
+    EXPECT_NEAR(a.spallMassMg, scabMass, 1e-9 * scabMass);
+    EXPECT_LT(a.bulgeMm, kSpacing);
+    EXPECT_FALSE(*a.rearWallPerforated);
+}
+
+TEST(RearWallPerforation, AStretchedBulgeIsStillOneWall) {
+    // Within r < 1 the rear half of the wall is stretched axially by 80 % and moves out:
+    // neighbours 1.8 spacings apart, beyond the 1.5-spacing link of failed material, still
+    // one sound wall. A bulge of 0.4 mm, no spall.
+    SyntheticRun run(test::whippleScene());
+    auto& snap = run.addSnapshot(1.0);
+    run.forBody(snap, "rear", [&](std::size_t i) {
+        const double z0 = run.initial.z[i];
+        if (run.initial.r[i] < 1.0 && z0 > kWallFront + 0.5) {
+            snap.z[i] += 0.8 * (z0 - kWallFront - 0.5);
+            snap.vz[i] = 0.2;
+        }
+    });
+    const auto a = assessWall(run, "wall_stretched");
+    EXPECT_FALSE(a.detachedSpall);
+    EXPECT_NEAR(a.bulgeMm, 0.8 * (0.5 - 0.5 * kSpacing), 1e-6);
     EXPECT_FALSE(*a.rearWallPerforated);
 }
 
