@@ -4,6 +4,7 @@
 #include "geometry/GmshMesher.hpp"
 #include "io/Checkpoint.hpp"
 #include "io/JsonInput.hpp"
+#include "scene/PointBudget.hpp"
 #include "scene/Scene.hpp"
 #include "solver/RunLoop.hpp"
 #include "solver/SceneLibrary.hpp"
@@ -123,6 +124,7 @@ void HviRunTool::benchmark() {
             doc["bodies"][1]["discretization"] = "fe";
         }
         const scene::Scene scene = scene::parseScene(doc, "<benchmark>", library.names());
+        scene::requirePointBudget(scene, "<benchmark>", scene::availableMemoryBytes());
         const auto tSetup = std::chrono::steady_clock::now();
         solver::Simulation sim(scene, library);
         const double setup =
@@ -250,6 +252,7 @@ void HviRunTool::execute() {
         library.merge(material::MaterialLibrary::fromFile(m_materials));
     }
     const scene::Scene scene = scene::parseScene(doc, m_scene, library.names());
+    scene::requirePointBudget(scene, m_scene, scene::availableMemoryBytes());
 
     solver::Simulation sim(scene, library);
     json materials = json::object();

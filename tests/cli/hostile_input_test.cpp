@@ -240,6 +240,21 @@ TEST(HostileInput, HviRunReadsTheSceneFromStdin) {
     EXPECT_TRUE(oneLine(noOutput, 2, "hvi-run: <flags>: --output: "));
 }
 
+// Item 5: a tiny spacing allocated until bad_alloc or spun in the particle generator; the
+// run is refused before anything is allocated, naming the body, the count and the memory.
+TEST(HostileInput, APointCountBeyondTheMachineIsRefusedAtOnce) {
+    const auto scene = writeTemp("huge.scene.json", kScene);
+    const auto run = freshOutput("huge.h5");
+    const auto r = runTool("hvi-run", scene.string() + " -o " + run.string() +
+                                          " --resolution-mm 1e-9 --threads 1");
+    EXPECT_TRUE(oneLine(r, 2, "hvi-run: " + scene.string() + ": /bodies/1: body 'plate'"))
+        << r.err;
+    EXPECT_NE(r.err.find(" GB is available"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(run));
+    const auto bench = runTool("hvi-run", "--benchmark --resolution-mm 1e-9 --threads 1");
+    EXPECT_TRUE(oneLine(bench, 2, "hvi-run: <benchmark>: /bodies/")) << bench.err;
+}
+
 // Minor: `hvi-run in.json -o in.json` replaced the scene with the run file.
 TEST(HostileInput, HviRunKeepsItsScene) {
     const auto scene = writeTemp("keep.scene.json", kScene);
