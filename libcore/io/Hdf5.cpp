@@ -67,7 +67,14 @@ herr_t collectInnermost(unsigned /*n*/, const H5E_error2_t* err, void* clientDat
 std::string lastErrorMessage() {
     std::string message;
     H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, collectInnermost, &message);
+    // The library's own texts can hold line breaks (a write failure quotes ctime()); the
+    // tools' errors are one line.
+    std::replace(message.begin(), message.end(), '\n', ' ');
     return message;
+}
+
+void skipCleanupAtExit() {
+    H5dont_atexit();
 }
 
 void failWrite(const std::string& what) {

@@ -72,6 +72,13 @@ private:
 /// The innermost message on the current HDF5 error stack ("" when empty).
 std::string lastErrorMessage();
 
+/// Keeps the HDF5 library from closing what is still open when the process exits. After a
+/// failed write (disk full) a file the library could not close stays in its tables, and its
+/// exit-time clean-up (H5_term_library) then crashes: exit 139 instead of the tool's 3. The
+/// tools close every file they open on every path (RAII handles), so nothing is lost; the
+/// kernel reclaims the rest. Must be called before the first HDF5 call: Tool::run does.
+void skipCleanupAtExit();
+
 /// Throws RuntimeFailure("what: <innermost HDF5 message>").
 [[noreturn]] void failWrite(const std::string& what);
 

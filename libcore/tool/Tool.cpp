@@ -1,6 +1,7 @@
 #include "tool/Tool.hpp"
 
 #include "core/BuildInfo.hpp"
+#include "io/Hdf5.hpp"
 #include "io/JsonInput.hpp"
 
 #include <exception>
@@ -42,6 +43,7 @@ int Tool::reportInputError(const InputError& error) const {
 }
 
 int Tool::run(int argc, char** argv) {
+    io::h5::skipCleanupAtExit(); // a failed write must not turn exit 3 into a crash at exit
     CLI::App app{m_summary, m_name};
     app.set_version_flag("--version", m_name + " " + versionString());
     app.add_flag("-q,--quiet", m_quiet, "Print only warnings and errors on stderr");

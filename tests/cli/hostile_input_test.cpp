@@ -3,6 +3,7 @@
 // None may crash.
 #include "AssessScenes.hpp"
 #include "RunTool.hpp"
+#include "io/AtomicOutput.hpp"
 #include "io/RunFileReader.hpp"
 
 #include <fcntl.h>
@@ -253,6 +254,28 @@ TEST(HostileInput, APointCountBeyondTheMachineIsRefusedAtOnce) {
     EXPECT_FALSE(fs::exists(run));
     const auto bench = runTool("hvi-run", "--benchmark --resolution-mm 1e-9 --threads 1");
     EXPECT_TRUE(oneLine(bench, 2, "hvi-run: <benchmark>: /bodies/")) << bench.err;
+}
+
+// Item 6: a full disk while the run file is written printed the error, then crashed in the
+// HDF5 library's exit-time clean-up (exit 139). A file-size limit stands in for the full
+// disk (the write fails with EFBIG instead of ENOSPC, on the same path).
+TEST(HostileInput, AFullDiskIsAComputationFailureNotACrash) {
+    const auto scene = writeTemp("full.scene.json", kScene);
+    const auto run = freshOutput("full.h5");
+    const auto errPath = tempPath("full.err");
+    const std::string script = "trap '' XFSZ; ulimit -f 100; " + toolPath("hvi-run").string() +
+                               " " + scene.string() + " -o " + run.string() +
+                               " --threads 1 -q --snapshot-every-us 0.001 2>" + errPath.string();
+    const int status = std::system(script.c_str());
+    ToolResult r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream err(errPath);
+    std::stringstream text;
+    text << err.rdbuf();
+    r.err = text.str();
+    EXPECT_TRUE(oneLine(r, 3, "hvi-run: error: ")) << r.exitCode << ": " << r.err;
+    EXPECT_FALSE(fs::exists(run));
+    EXPECT_FALSE(hvi::io::orphanedTemporary(run).has_value());
 }
 
 // Minor: `hvi-run in.json -o in.json` replaced the scene with the run file.
