@@ -248,8 +248,7 @@ TEST(HostileInput, APointCountBeyondTheMachineIsRefusedAtOnce) {
     const auto run = freshOutput("huge.h5");
     const auto r = runTool("hvi-run", scene.string() + " -o " + run.string() +
                                           " --resolution-mm 1e-9 --threads 1");
-    EXPECT_TRUE(oneLine(r, 2, "hvi-run: " + scene.string() + ": /bodies/1: body 'plate'"))
-        << r.err;
+    EXPECT_TRUE(oneLine(r, 2, "hvi-run: " + scene.string() + ": /bodies/1: body 'plate'")) << r.err;
     EXPECT_NE(r.err.find(" GB is available"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(run));
     const auto bench = runTool("hvi-run", "--benchmark --resolution-mm 1e-9 --threads 1");

@@ -27,7 +27,7 @@ nlohmann::json budgetScene(bool feWall) {
 TEST(PointBudget, CountsAreTheBodiesBoxesOverTheSpacingSquared) {
     const auto points = scene::estimatedPoints(test::makeScene(budgetScene(false)));
     ASSERT_EQ(points.size(), 2u);
-    EXPECT_NEAR(points[0], 1.0 * 0.5 / 0.01, 1e-9); // sphere r 0.5: box 1 x 0.5 mm
+    EXPECT_NEAR(points[0], 1.0 * 0.5 / 0.01, 1e-9);  // sphere r 0.5: box 1 x 0.5 mm
     EXPECT_NEAR(points[1], 1.0 * 10.0 / 0.01, 1e-9); // plate 1 x 10 mm: 10 x 100 points
     const auto fe = scene::estimatedPoints(test::makeScene(budgetScene(true)));
     EXPECT_NEAR(fe[1], 2.0 * 1000.0, 1e-9); // elements and their erosion slots
