@@ -264,21 +264,15 @@ void HviRunTool::execute() {
     const int threads = omp_get_max_threads();
     json prov = provenance(m_scene, scene.resolved);
     prov["threads"] = threads;
-    if (const fe::FeSolid* fe = sim.finiteElements()) {
-        // The FE mesh beside the run, for inspection in gmsh (the same structured grid).
-        std::vector<geometry::MeshRectangle> rectangles;
-        for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-            const auto& body = scene.bodies[b];
-            if (body.discretization == scene::Discretization::Fe) {
-                rectangles.push_back({body.name, body.shape.boundZMin(), body.shape.boundZMax(),
-                                      body.shape.boundRMin(), body.shape.boundRMax(),
-                                      body.spacing});
-            }
+    // The FE mesh beside the run, for inspection in gmsh (the same structured grid). Written
+    // once the run has ended (complete or interrupted), so a run that fails or a refused
+    // --resume leaves no mesh and replaces none.
+    std::vector<geometry::MeshRectangle> rectangles;
+    for (const auto& body : scene.bodies) {
+        if (body.discretization == scene::Discretization::Fe) {
+            rectangles.push_back({body.name, body.shape.boundZMin(), body.shape.boundZMax(),
+                                  body.shape.boundRMin(), body.shape.boundRMax(), body.spacing});
         }
-        const auto meshPath = std::filesystem::path(output).replace_extension(".msh");
-        geometry::GmshMesher::write(rectangles, meshPath);
-        info("FE mesh: " + std::to_string(fe->nodes().size()) + " nodes, " +
-             std::to_string(fe->elements().size()) + " elements; written to " + meshPath.string());
     }
     info("scene '" + scene.id + "': " + std::to_string(sim.particles().size()) + " particles, " +
          std::to_string(scene.bodies.size()) + " bodies, spacing " +
@@ -304,6 +298,12 @@ void HviRunTool::execute() {
                   summary.particleSteps / std::max(summary.wallSeconds, 1e-9),
                   summary.maxEnergyError, output.c_str());
     info(line);
+    if (const fe::FeSolid* fe = sim.finiteElements(); fe && !rectangles.empty()) {
+        const auto meshPath = std::filesystem::path(output).replace_extension(".msh");
+        geometry::GmshMesher::write(rectangles, meshPath);
+        info("FE mesh: " + std::to_string(fe->nodes().size()) + " nodes, " +
+             std::to_string(fe->elements().size()) + " elements; written to " + meshPath.string());
+    }
     if (!summary.complete) {
         throw Interrupted("run interrupted; resume with --resume");
     }

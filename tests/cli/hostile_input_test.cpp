@@ -259,7 +259,10 @@ TEST(HostileInput, APointCountBeyondTheMachineIsRefusedAtOnce) {
 // HDF5 library's exit-time clean-up (exit 139). A file-size limit stands in for the full
 // disk (the write fails with EFBIG instead of ENOSPC, on the same path).
 TEST(HostileInput, AFullDiskIsAComputationFailureNotACrash) {
-    const auto scene = writeTemp("full.scene.json", kScene);
+    std::string text = kScene; // with an FE bumper, whose mesh must not be left either
+    const std::string plate = "{\"name\": \"plate\", \"role\": \"bumper\",";
+    text.replace(text.find(plate), plate.size(), plate + " \"discretization\": \"fe\",");
+    const auto scene = writeTemp("full.scene.json", text);
     const auto run = freshOutput("full.h5");
     const auto errPath = tempPath("full.err");
     const std::string script = "trap '' XFSZ; ulimit -f 100; " + toolPath("hvi-run").string() +
@@ -269,12 +272,14 @@ TEST(HostileInput, AFullDiskIsAComputationFailureNotACrash) {
     ToolResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     std::ifstream err(errPath);
-    std::stringstream text;
-    text << err.rdbuf();
-    r.err = text.str();
+    std::stringstream said;
+    said << err.rdbuf();
+    r.err = said.str();
     EXPECT_TRUE(oneLine(r, 3, "hvi-run: error: ")) << r.exitCode << ": " << r.err;
     EXPECT_FALSE(fs::exists(run));
     EXPECT_FALSE(hvi::io::orphanedTemporary(run).has_value());
+    // Item 11: nor an FE mesh (it used to be written before the run started).
+    EXPECT_FALSE(fs::exists(fs::path(run).replace_extension(".msh")));
 }
 
 // Minor: `hvi-run in.json -o in.json` replaced the scene with the run file.
