@@ -4,6 +4,7 @@
 #include "geometry/GmshMesher.hpp"
 #include "io/Checkpoint.hpp"
 #include "io/JsonInput.hpp"
+#include "io/RunLock.hpp"
 #include "scene/PointBudget.hpp"
 #include "scene/Scene.hpp"
 #include "solver/RunLoop.hpp"
@@ -51,15 +52,16 @@ void refuseToOverwriteScene(const std::string& scene, const std::string& output)
         {run, "the run file"},
         {std::filesystem::path(run).replace_extension(".xmf"), "the run's XDMF sidecar"},
         {std::filesystem::path(run).replace_extension(".msh"), "the run's FE mesh"},
-        {io::checkpointPathFor(run), "the run's checkpoint"}};
+        {io::checkpointPathFor(run), "the run's checkpoint"},
+        {io::lockPathFor(run), "the run's lock"}};
     for (const auto& [path, what] : written) {
         std::error_code error; // a file that does not exist yet is not the scene
         if (std::filesystem::equivalent(scene, path, error)) {
-            throw InputError("<flags>", "--output",
-                             "would replace the scene " + scene + " with " + what + " " +
-                                 path.string(),
-                             "a run file whose name and whose .xmf, .msh and .ckpt.h5 are not "
-                             "the scene's");
+            throw InputError(
+                "<flags>", "--output",
+                "would replace the scene " + scene + " with " + what + " " + path.string(),
+                "a run file whose name and whose .xmf, .msh, .ckpt.h5 and .lock are not "
+                "the scene's");
         }
     }
 }
@@ -214,6 +216,7 @@ void HviRunTool::execute() {
     }
     const std::string output = runFileName(m_scene, m_output);
     refuseToOverwriteScene(m_scene, output);
+    const io::RunLock lock(output); // one hvi-run per -o, until this one exits
     // --resume without a checkpoint would start afresh and overwrite what is there.
     if (m_resume && !std::filesystem::exists(io::checkpointPathFor(output))) {
         throw InputError("<flags>", "--resume",

@@ -7,7 +7,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <sstream>
+#include <sys/wait.h>
 
 using namespace hvi::test;
 
@@ -140,6 +143,36 @@ TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
     const auto history = reader.readHistory();
     ASSERT_FALSE(history.timeUs.empty());
     EXPECT_EQ(history.timeUs.front(), 0.0);
+}
+
+// Two hvi-run on one -o both exited 0 and the last rename won (issue #25, item 13): the second
+// is refused while the first runs, and the first's lock goes with it.
+TEST(HviRunCli, ASecondRunOnTheSameOutputIsRefused) {
+    std::string text = kScene;
+    text.replace(text.find("\"end_time_us\": 0.3"), std::string("\"end_time_us\": 0.3").size(),
+                 "\"end_time_us\": 8.0");
+    const auto scene = writeTemp("locked.json", text);
+    const auto run = tempPath("locked.h5");
+    const auto lock = tempPath("locked.lock");
+    std::filesystem::remove(run);
+    // The first run in the background; the second once the first holds the lock.
+    const std::string script =
+        toolPath("hvi-run").string() + " " + scene.string() + " -o " + run.string() +
+        " --threads 1 -q & p=$!; i=0; while [ ! -f " + lock.string() +
+        " ] && [ $i -lt 1200 ]; do sleep 0.02; i=$((i+1)); done; " + toolPath("hvi-run").string() +
+        " " + scene.string() + " -o " + run.string() + " --threads 1 -q 2>" +
+        tempPath("locked.err").string() +
+        "; second=$?; wait $p; first=$?; exit $((first * 16 + second))";
+    const int status = std::system(script.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2) << "first run's exit * 16 + second's";
+    std::ifstream err(tempPath("locked.err"));
+    std::stringstream said;
+    said << err.rdbuf();
+    EXPECT_NE(said.str().find("--output: another hvi-run is writing"), std::string::npos)
+        << said.str();
+    EXPECT_TRUE(std::filesystem::exists(run)); // the first one's
+    EXPECT_FALSE(std::filesystem::exists(lock));
 }
 
 TEST(HviRunCli, BenchmarkPrintsThroughput) {
