@@ -1,6 +1,7 @@
 #include "scene/Scene.hpp"
 
 #include "io/JsonInput.hpp"
+#include "scene/BodyLayout.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -266,6 +267,9 @@ Scene parseScene(const json& document, const std::string& file,
         if (b.shape.kind == ShapeKind::Plate && b.shape.outerRadius <= 0.0) {
             b.shape.outerRadius = scene.domain.radius;
         }
+    }
+    if (issues.empty()) { // overlaps and the domain, once every shape is sound
+        issues = bodyLayoutIssues(scene, file);
     }
     if (!issues.empty()) {
         throw InputError(std::move(issues));
