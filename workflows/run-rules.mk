@@ -22,5 +22,8 @@ $(OUT)/%/run.h5: $(OUT)/%/scene.json
 	  rm -f $(OUT)/$*/run.part.xmf; fi; \
 	echo "$*: run in $$(( $$(date +%s) - start )) s"
 
+# AFTER_VERDICT (optional): a command run once a case's verdict is written (validate.mk: the
+# progress line).
 $(OUT)/%/verdict.json: $(OUT)/%/run.h5
 	$(BIN)/hvi-assess/hvi-assess $< -o $@ -q 2>$(OUT)/$*/assess.log
+	$(AFTER_VERDICT)

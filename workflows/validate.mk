@@ -23,6 +23,11 @@ END_TIME_FLAG := $(if $(END_TIME_US),--end-time-us $(END_TIME_US))
 MATERIALS ?=
 MATERIALS_FLAG := $(if $(MATERIALS),--materials $(abspath $(MATERIALS)))
 
+# After each case: done, left and the time to go (hvi-validate progress), with the -j of this
+# make (in MAKEFLAGS once make runs the recipes; 1 without -j).
+JOBS = $(or $(patsubst -j%,%,$(filter -j%,$(MAKEFLAGS))),1)
+AFTER_VERDICT = @$(HVI_VALIDATE) progress --set $(SET) --out-dir $(OUT) --jobs $(JOBS)
+
 .PHONY: validate validate-ble
 .SECONDARY:
 .DELETE_ON_ERROR:

@@ -2,6 +2,7 @@
 
 #include "io/AtomicOutput.hpp"
 #include "validation/CaseInputs.hpp"
+#include "validation/Progress.hpp"
 #include "validation/ValidationReport.hpp"
 
 #include <filesystem>
@@ -18,9 +19,9 @@ HviValidateTool::HviValidateTool()
                                  "the verdicts against the tests") {}
 
 void HviValidateTool::addOptions(CLI::App& app) {
-    app.add_option("action", m_action, "list | inputs | report")
+    app.add_option("action", m_action, "list | inputs | report | progress")
         ->required()
-        ->check(CLI::IsMember({"list", "inputs", "report"}));
+        ->check(CLI::IsMember({"list", "inputs", "report", "progress"}));
     app.add_option("case", m_case, "Case id (inputs)");
     app.add_option("--set", m_set,
                    "Cases: all (default), source_study, development, or quick (the bracketing "
@@ -28,6 +29,8 @@ void HviValidateTool::addOptions(CLI::App& app) {
     app.add_option("--out-dir", m_outDir, "inputs: where to write; report: the case directories");
     app.add_option("-o,--output", m_output, "report: the markdown file ('-' = stdout)");
     app.add_option("--resolution-mm", m_resolution, "report: the spacing the runs used [mm]");
+    app.add_option("--jobs", m_jobs, "progress: runs side by side, for the estimate (default 1)")
+        ->check(CLI::PositiveNumber);
 }
 
 void HviValidateTool::execute() {
@@ -64,6 +67,11 @@ void HviValidateTool::execute() {
         io::writeTextAtomically(dir / "panel.json", validation::panelInput(*c).dump(2) + "\n");
         info(c->id + ": " + validation::toString(c->shield) + ", test " + c->result + " -> " +
              dir.string());
+        return;
+    }
+    if (m_action == "progress") { // one line on stderr, after each finished case
+        std::cerr << validation::progressLine(validation::progressOf(cases, m_outDir), m_jobs)
+                  << "\n";
         return;
     }
     validation::ReportOptions options;

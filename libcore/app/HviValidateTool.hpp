@@ -32,6 +32,7 @@ private:
     std::string m_outDir;
     std::string m_output = "-";
     std::string m_resolution;
+    int m_jobs = 1;
 };
 
 } // namespace hvi::app

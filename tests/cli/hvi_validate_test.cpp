@@ -87,6 +87,10 @@ TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
         EXPECT_NE(report.find(id), std::string::npos) << report;
     }
     EXPECT_NE(report.find("Not run: 0 of 2"), std::string::npos) << report;
+    // A progress line after each case (issue #22, item 5), the last one saying all are done.
+    const std::string log = readText(out.string() + ".log");
+    EXPECT_NE(log.find("validate: 1/2 cases done, 1 left, about "), std::string::npos) << log;
+    EXPECT_NE(log.find("validate: all 2 cases done"), std::string::npos) << log;
     for (const char* id : {"HITF03147-2", "A1076"}) {
         const auto v = hvi::io::readJsonFile((out / id / "verdict.json").string());
         EXPECT_TRUE(v["verdict"].is_string()) << id;
