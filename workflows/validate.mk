@@ -13,7 +13,8 @@ override OUT := $(if $(filter /%,$(OUT)),$(OUT),$(ROOT)/$(OUT))
 override REPORT := $(if $(filter /%,$(REPORT)),$(REPORT),$(ROOT)/$(REPORT))
 
 HVI_VALIDATE := $(BIN)/hvi-validate/hvi-validate
-CASES := $(shell $(HVI_VALIDATE) list --set $(SET))
+# Interleaved: the shield types in turn, so a validation stopped part-way has measured each.
+CASES := $(shell $(HVI_VALIDATE) list --set $(SET) --interleave)
 ifeq ($(strip $(CASES)),)
 $(error hvi-validate listed no case for SET=$(SET): build the toolkit first (scripts/build.sh))
 endif
@@ -28,7 +29,15 @@ MATERIALS_FLAG := $(if $(MATERIALS),--materials $(abspath $(MATERIALS)))
 JOBS = $(or $(patsubst -j%,%,$(filter -j%,$(MAKEFLAGS))),1)
 AFTER_VERDICT = @$(HVI_VALIDATE) progress --set $(SET) --out-dir $(OUT) --jobs $(JOBS)
 
-.PHONY: validate validate-ble
+# The verdicts kept in the repository, one file per case and spacing: a verdict found there
+# stands for its run (the run is not repeated), so a validation spans sessions and machines
+# and docs/validation.md can be regenerated without the run files. `make validate-keep`
+# copies the verdicts of OUT there. They hold for the solver that made them (their
+# provenance names its version): after a change to the physics, `make validate-forget` and
+# run again.
+ARCHIVE ?= $(ROOT)/data/validation/verdicts/$(RESOLUTION)
+
+.PHONY: validate validate-ble validate-keep validate-forget
 .SECONDARY:
 .DELETE_ON_ERROR:
 
@@ -43,6 +52,19 @@ validate-ble: $(foreach c,$(CASES),$(OUT)/$(c)/ble.json)
 $(REPORT): $(foreach c,$(CASES),$(OUT)/$(c)/verdict.json $(OUT)/$(c)/ble.json)
 	$(HVI_VALIDATE) report --set $(SET) --out-dir $(OUT) --resolution-mm $(RESOLUTION) -o $@
 	@echo "validate: $(words $(CASES)) cases -> $@"
+
+validate-keep:
+	@mkdir -p $(ARCHIVE); n=0; for c in $(CASES); do \
+	  if [ -f $(OUT)/$$c/verdict.json ] && ! cmp -s $(OUT)/$$c/verdict.json $(ARCHIVE)/$$c.json; \
+	  then cp -p $(OUT)/$$c/verdict.json $(ARCHIVE)/$$c.json; n=$$((n+1)); fi; done; \
+	echo "validate-keep: $$n new verdicts -> $(ARCHIVE)"
+
+validate-forget:
+	rm -f $(foreach c,$(CASES),$(ARCHIVE)/$(c).json)
+
+# Before the run rules: a kept verdict, where there is one, is taken instead of a run.
+$(OUT)/%/verdict.json: $(ARCHIVE)/%.json
+	@mkdir -p $(@D); cp -p $< $@
 
 $(OUT)/%/panel.json:
 	$(HVI_VALIDATE) inputs $* --out-dir $(OUT)/$* -q

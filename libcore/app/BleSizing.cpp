@@ -408,6 +408,19 @@ BleSizingOutcome computeSizing(const json& doc, const std::string& file) {
                               : "HB09 6-1: Whipple NNO with S = min(2 D_cell, t_core)",
             r, threat.diameterCm);
         out.curveLabel = equation == "srl" ? "honeycomb (SRL)" : "honeycomb (HB09 6-1)";
+        // What hcomb2rings needs next; the cell and foil pass through (the equations use
+        // the cell size at most), and hcomb2rings names what is still missing.
+        json next = {{"type", "honeycomb_sandwich"},
+                     {"front_facesheet_mm", u::cmToMm(panel.frontFacesheetCm)},
+                     {"rear_facesheet_mm", u::cmToMm(panel.rearFacesheetCm)},
+                     {"core_thickness_mm", shield.at("core_thickness_mm")},
+                     {"facesheet_material", shield.at("facesheet_material")}};
+        for (const char* key : {"cell_size_mm", "foil_thickness_mm", "foil_material"}) {
+            if (shield.contains(key)) {
+                next[key] = shield.at(key);
+            }
+        }
+        sizing["panel"] = next;
     } else { // foam_sandwich
         const ble::BleMaterial* m = material(shield, "material", "/shield", problems);
         const double yield = rearWallYieldKsi(shield, m, "material", problems);

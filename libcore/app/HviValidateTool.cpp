@@ -29,6 +29,8 @@ void HviValidateTool::addOptions(CLI::App& app) {
     app.add_option("--out-dir", m_outDir, "inputs: where to write; report: the case directories");
     app.add_option("-o,--output", m_output, "report: the markdown file ('-' = stdout)");
     app.add_option("--resolution-mm", m_resolution, "report: the spacing the runs used [mm]");
+    app.add_flag("--interleave", m_interleave,
+                 "list: the shield types in turn (the run order of make validate)");
     app.add_option("--jobs", m_jobs, "progress: runs side by side, for the estimate (default 1)")
         ->check(CLI::PositiveNumber);
 }
@@ -42,7 +44,7 @@ void HviValidateTool::execute() {
                          "all, source_study, development, quick or ci");
     }
     if (m_action == "list") {
-        for (const auto& c : cases) {
+        for (const auto& c : m_interleave ? validation::interleavedByShield(cases) : cases) {
             std::cout << c.id << "\n";
         }
         return;

@@ -33,6 +33,7 @@ private:
     std::string m_output = "-";
     std::string m_resolution;
     int m_jobs = 1;
+    bool m_interleave = false;
 };
 
 } // namespace hvi::app

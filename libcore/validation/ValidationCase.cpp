@@ -2,6 +2,7 @@
 
 #include "io/Resources.hpp"
 
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -198,6 +199,27 @@ std::vector<Case> selectCases(const std::string& selection) {
     for (const auto& c : allCases()) {
         if (selection == "all" || c.set == selection) {
             out.push_back(c);
+        }
+    }
+    return out;
+}
+
+std::vector<Case> interleavedByShield(const std::vector<Case>& cases) {
+    const Shield order[] = {Shield::Whipple, Shield::Foam, Shield::Honeycomb};
+    std::vector<std::vector<const Case*>> queues(std::size(order));
+    for (const auto& c : cases) {
+        for (std::size_t k = 0; k < std::size(order); ++k) {
+            if (c.shield == order[k]) {
+                queues[k].push_back(&c);
+            }
+        }
+    }
+    std::vector<Case> out;
+    for (std::size_t i = 0; out.size() < cases.size(); ++i) {
+        for (const auto& q : queues) {
+            if (i < q.size()) {
+                out.push_back(*q[i]);
+            }
         }
     }
     return out;

@@ -61,6 +61,11 @@ const std::vector<Case>& allCases();
 /// std::invalid_argument for another name.
 std::vector<Case> selectCases(const std::string& selection);
 
+/// The same cases with the shield types taken in turn (Whipple, foam, honeycomb, Whipple, ...),
+/// each type in its given order: the run order of `make validate`, so that a validation
+/// stopped part-way has measured every shield type rather than the first one only.
+std::vector<Case> interleavedByShield(const std::vector<Case>& cases);
+
 /// The case with this id; throws std::invalid_argument naming the id when there is none.
 const Case& findCase(const std::string& id);
 

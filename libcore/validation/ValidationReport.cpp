@@ -24,6 +24,7 @@ struct Row {
     bool complete = false;
     std::optional<std::string> ble;
     std::optional<double> bleRatio; ///< d / d_c
+    std::string solver;             ///< the build of hvi-run that made the run (its git id)
 };
 
 std::optional<json> readIfPresent(const fs::path& path) {
@@ -59,6 +60,9 @@ Row readRow(const Case& c, const fs::path& dir) {
             row.wallS = (*v)["wall_time_s"].get<double>();
         }
         row.complete = (*v)["complete"] == true;
+        if ((*v)["solver"].is_object() && (*v)["solver"]["git"].is_string()) {
+            row.solver = (*v)["solver"]["git"].get<std::string>();
+        }
         if ((*v)["final_time_us"].is_number()) {
             row.endUs = (*v)["final_time_us"].get<double>();
         }
@@ -124,6 +128,7 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
     Tally oursAll, bleAll, bleOnRun;
     int tp = 0, fp = 0, fn = 0, tn = 0, axisOnly = 0, notRun = 0, provisional = 0;
     double wall = 0.0;
+    std::map<std::string, int> solvers; // build -> verdicts it made
     for (const auto& r : rows) {
         const std::string shield = r.c->set + " " + toString(r.c->shield);
         const std::string band = speedBand(r.c->velocityKmS);
@@ -144,6 +149,7 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
         axisOnly += r.axisOnly ? 1 : 0;
         provisional += r.final ? 0 : 1;
         wall += r.wallS.value_or(0.0);
+        ++solvers[r.solver.empty() ? "unknown" : r.solver];
     }
     md << "## Summary\n\n"
        << "| set, shield | cases | ours | BLE on the same cases | BLE on all |\n"
@@ -169,7 +175,18 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
        << "band alone: " << axisOnly
        << ". Provisional NP verdicts (run ended before rest): " << provisional
        << ". Not run: " << notRun << " of " << rows.size()
-       << ". Wall time of the runs: " << fmt("%.0f", wall) << " s.\n\n";
+       << ". Wall time of the runs: " << fmt("%.0f", wall) << " s.";
+    if (!solvers.empty()) {
+        // Verdicts kept from an older solver are not a measurement of the current one.
+        md << " Runs made by hvi-run build";
+        const char* sep = " ";
+        for (const auto& [build, n] : solvers) {
+            md << sep << "`" << build << "` (" << n << ")";
+            sep = ", ";
+        }
+        md << ".";
+    }
+    md << "\n\n";
 
     md << "## Cases\n\n"
        << "| case | shield | d mm | V km/s | test | ours | grade | final | axis | BLE | d/d_c | "

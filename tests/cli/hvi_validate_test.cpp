@@ -102,4 +102,28 @@ TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
                               toolPath("hvi-run").parent_path().parent_path().string() +
                               " OUT=" + out.string() + " >/dev/null 2>&1";
     EXPECT_EQ(std::system(again.c_str()), 0);
+
+    // Kept verdicts stand for their runs: copied out, the case directory's run and verdict
+    // removed, the next make takes the kept verdict and runs nothing.
+    const fs::path archive = tempPath("validate_ci_kept");
+    fs::remove_all(archive);
+    const std::string make = "make -s -C " + sourcePath("workflows").string() +
+                             " SET=ci RESOLUTION=0.1 THREADS=1 BIN=" +
+                             toolPath("hvi-run").parent_path().parent_path().string() +
+                             " OUT=" + out.string() + " ARCHIVE=" + archive.string();
+    ASSERT_EQ(std::system((make + " validate-keep >" + out.string() + ".keep.log 2>&1").c_str()), 0)
+        << readText(out.string() + ".keep.log");
+    EXPECT_NE(readText(out.string() + ".keep.log").find("validate-keep: 2 new verdicts"),
+              std::string::npos)
+        << readText(out.string() + ".keep.log");
+    const std::string kept = readText(archive / "A1076.json");
+    EXPECT_EQ(kept, readText(out / "A1076" / "verdict.json"));
+    fs::remove(out / "A1076" / "run.h5");
+    fs::remove(out / "A1076" / "verdict.json");
+    fs::remove(out / "validation.md");
+    ASSERT_EQ(std::system((make + " validate >" + out.string() + ".again.log 2>&1").c_str()), 0)
+        << readText(out.string() + ".again.log");
+    EXPECT_FALSE(fs::exists(out / "A1076" / "run.h5")) << "the kept verdict was run again";
+    EXPECT_EQ(readText(out / "A1076" / "verdict.json"), kept);
+    EXPECT_NE(readText(out / "validation.md").find("Not run: 0 of 2"), std::string::npos);
 }

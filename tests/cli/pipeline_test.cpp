@@ -5,6 +5,7 @@
 #include "io/RunFileReader.hpp"
 
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 
 using namespace hvi::test;
@@ -16,8 +17,10 @@ TEST(Pipeline, BleSizeToFoam2LayersToHviRun) {
     const auto run = tempPath("pipe.h5");
     auto r = runTool("ble-size", constraints.string() + " -q -o " + sizing.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    r = runTool("foam2layers", sizing.string() + " -q --core-discretization sph "
-                               "--particle-spacing-mm 0.08 -o " + scene.string());
+    r = runTool("foam2layers", sizing.string() +
+                                   " -q --core-discretization sph "
+                                   "--particle-spacing-mm 0.08 -o " +
+                                   scene.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("warning"), std::string::npos) << "a clean hand-over: " << r.err;
     const auto doc = hvi::io::readJsonFile(scene.string());
@@ -28,8 +31,7 @@ TEST(Pipeline, BleSizeToFoam2LayersToHviRun) {
         layers += body["role"] == "core_layer" ? 1 : 0;
     }
     EXPECT_EQ(layers, 2);
-    r = runTool("hvi-run", scene.string() + " -q --threads 1 --end-time-us 0.2 -o " +
-                               run.string());
+    r = runTool("hvi-run", scene.string() + " -q --threads 1 --end-time-us 0.2 -o " + run.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     hvi::io::RunFileReader reader(run.string());
     EXPECT_EQ(reader.runFacts()["stop_reason"], "end_time");
@@ -50,7 +52,8 @@ TEST(Pipeline, BleSizeWhippleAndSingleWallToFoam2Layers) {
          "--rear-wall-material Al2024-T3",
          {{"bumper", 0.64}, {"rear_wall", 0.41}},
          60.64},
-        {"single_wall", "--type single_wall --thickness-mm 4 --material Al2024-T3",
+        {"single_wall",
+         "--type single_wall --thickness-mm 4 --material Al2024-T3",
          {{"rear_wall", 4.0}},
          0.0},
     };
@@ -83,4 +86,54 @@ TEST(Pipeline, BleSizeWhippleAndSingleWallToFoam2Layers) {
         EXPECT_EQ(plates, shield.plates.size());
         EXPECT_EQ(doc["bodies"].size(), shield.plates.size() + 1); // + the projectile
     }
+}
+
+// A honeycomb panel sized by ble-size becomes a scene through hcomb2rings: the sizing's panel
+// block carries the facesheets, core, cell and foil; without a foil the writer says which key
+// of the constraints to add.
+TEST(Pipeline, BleSizeHoneycombToHcomb2Rings) {
+    const auto constraints = tempPath("pipe_hc.constraints.json");
+    const auto sizing = tempPath("pipe_hc.sizing.json");
+    const auto scene = tempPath("pipe_hc.scene.json");
+    auto writeConstraints = [&](const std::string& foil) {
+        std::ofstream(constraints)
+            << R"({"threat": {"diameter_mm": 3.6, "velocity_km_s": 6.22, "material": "Al6061-T6"},
+                   "shield": {"type": "honeycomb_sandwich", "facesheet_mm": 1.27,
+                              "core_thickness_mm": 50.8, "cell_size_mm": 4.7625,
+                              "facesheet_material": "Al2024-T3")"
+            << foil << "}}";
+    };
+    writeConstraints(R"(, "foil_thickness_mm": 0.0254, "foil_material": "Al5052-H39")");
+    auto r = runTool("ble-size", constraints.string() + " -q -o " + sizing.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto panel = hvi::io::readJsonFile(sizing.string())["panel"];
+    EXPECT_EQ(panel["type"], "honeycomb_sandwich");
+    EXPECT_DOUBLE_EQ(panel["foil_thickness_mm"].get<double>(), 0.0254);
+    r = runTool("hcomb2rings",
+                sizing.string() + " -q --particle-spacing-mm 0.08 -o " + scene.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto doc = hvi::io::readJsonFile(scene.string());
+    EXPECT_NO_THROW(hvi::io::validateAgainstSchema(doc, "scene", scene.string()));
+    int rings = 0;
+    for (const auto& body : doc["bodies"]) {
+        rings += body["role"] == "core_ring" ? 1 : 0;
+        if (body["role"] == "core_ring") {
+            EXPECT_EQ(body["material"], "Al5052-H39");
+        }
+        if (body["role"] == "rear_wall") {
+            EXPECT_EQ(body["material"], "Al2024-T3");
+            EXPECT_NEAR(body["shape"]["thickness_mm"].get<double>(), 1.27, 1e-12);
+        }
+    }
+    EXPECT_GT(rings, 0);
+
+    // No foil in the constraints: one line naming the missing key, no scene.
+    writeConstraints("");
+    std::filesystem::remove(scene);
+    r = runTool("ble-size", constraints.string() + " -q -o " + sizing.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = runTool("hcomb2rings", sizing.string() + " -q -o " + scene.string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("foil_thickness_mm"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(scene));
 }
