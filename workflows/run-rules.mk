@@ -3,14 +3,18 @@
 # under $(OUT). Set before including: OUT, BIN, RESOLUTION, THREADS; optional END_TIME_FLAG,
 # MATERIALS_FLAG, and LAUNCH (a command put in front of every hvi-run, e.g. 'srun -n1 -c8');
 # RUN_FLAGS and ASSESS_FLAGS replace hvi-run's and hvi-assess's -q (design.mk: progress on
-# the terminal, pictures and the test's result).
+# the terminal, pictures and the test's result); WRITER_FLAGS go to the scene writer; and
+# spacing_of, a function of the case directory's name, gives its spacing (convergence.mk:
+# one per directory; otherwise RESOLUTION).
 LAUNCH ?=
+WRITER_FLAGS ?=
+spacing_of ?= $(RESOLUTION)
 RUN_FLAGS ?= -q
 ASSESS_FLAGS ?= -q
 
 $(OUT)/%/scene.json: $(OUT)/%/panel.json
-	w=$$(cat $(OUT)/$*/writer); $(BIN)/$$w/$$w $< --particle-spacing-mm $(RESOLUTION) \
-	  $(END_TIME_FLAG) -o $@ 2>$(OUT)/$*/scene.log
+	w=$$(cat $(OUT)/$*/writer); $(BIN)/$$w/$$w $< --particle-spacing-mm $(call spacing_of,$*) \
+	  $(END_TIME_FLAG) $(WRITER_FLAGS) -o $@ 2>$(OUT)/$*/scene.log
 
 # The run writes run.part.h5, renamed to run.h5 once complete: an interrupted run leaves
 # its checkpoint beside run.part.h5 (stopped by a signal) or beside the run.part.h5.tmp.PID

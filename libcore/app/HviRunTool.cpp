@@ -277,13 +277,22 @@ void HviRunTool::execute() {
                                   body.shape.boundRMin(), body.shape.boundRMax(), body.spacing});
         }
     }
-    info("scene '" + scene.id + "': " + std::to_string(sim.particles().size()) + " particles, " +
-         std::to_string(scene.bodies.size()) + " bodies, spacing " +
-         std::to_string(scene.sph.particleSpacing) + " mm, " + std::to_string(threads) +
-         " threads, to " + std::to_string(scene.run.endTime) + " us");
+    // SPH particles and FE elements; the particle slots FE elements erode into are not
+    // particles until then.
+    std::size_t sphParticles = 0;
+    for (std::size_t i = 0; i < sim.particles().size(); ++i) {
+        const auto body = static_cast<std::size_t>(sim.particles().body[i]);
+        sphParticles += scene.bodies[body].discretization == scene::Discretization::Sph ? 1 : 0;
+    }
+    const std::size_t elements = sim.finiteElements() ? sim.finiteElements()->elements().size() : 0;
+    info("scene '" + scene.id + "': " + std::to_string(sphParticles) + " SPH particles, " +
+         std::to_string(elements) + " FE elements, " + std::to_string(scene.bodies.size()) +
+         " bodies, spacing " + std::to_string(scene.sph.particleSpacing) + " mm, " +
+         std::to_string(threads) + " threads, to " + std::to_string(scene.run.endTime) + " us");
 
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
+    std::signal(SIGHUP, onSignal); // a closed terminal: stop as for SIGINT, with a checkpoint
     solver::RunOptions options;
     options.runFile = output;
     options.threads = threads;
@@ -293,13 +302,24 @@ void HviRunTool::execute() {
     const auto summary =
         solver::runToCompletion(sim, scene.resolved.dump(), materials.dump(), prov, options,
                                 [this](const std::string& line) { info(line); });
-    char line[256];
+    // Throughput of what the scene holds: particle-steps, element-steps, or both.
+    const double wall = std::max(summary.wallSeconds, 1e-9);
+    std::string rates;
+    char buf[96];
+    if (sphParticles > 0) {
+        std::snprintf(buf, sizeof buf, "%.3e particle-steps/s", summary.particleSteps / wall);
+        rates = buf;
+    }
+    if (elements > 0) {
+        std::snprintf(buf, sizeof buf, "%.3e element-steps/s", summary.elementSteps / wall);
+        rates += (rates.empty() ? "" : ", ") + std::string(buf);
+    }
+    char line[512];
     std::snprintf(line, sizeof line,
-                  "%s at t = %.4f us after %ld steps; wall %.1f s; %.3e particle-steps/s; max "
-                  "|energy error| %.2e; wrote %s",
+                  "%s at t = %.4f us after %ld steps; wall %.1f s; %s; max |energy error| "
+                  "%.2e; wrote %s",
                   summary.stopReason.c_str(), summary.timeUs, summary.steps, summary.wallSeconds,
-                  summary.particleSteps / std::max(summary.wallSeconds, 1e-9),
-                  summary.maxEnergyError, output.c_str());
+                  rates.c_str(), summary.maxEnergyError, output.c_str());
     info(line);
     if (const fe::FeSolid* fe = sim.finiteElements(); fe && !rectangles.empty()) {
         const auto meshPath = std::filesystem::path(output).replace_extension(".msh");

@@ -1,7 +1,9 @@
 #include "app/HviValidateTool.hpp"
 
 #include "io/AtomicOutput.hpp"
+#include "plot/XyPlot.hpp"
 #include "validation/CaseInputs.hpp"
+#include "validation/ConvergenceReport.hpp"
 #include "validation/Progress.hpp"
 #include "validation/ValidationReport.hpp"
 
@@ -19,9 +21,9 @@ HviValidateTool::HviValidateTool()
                                  "the verdicts against the tests") {}
 
 void HviValidateTool::addOptions(CLI::App& app) {
-    app.add_option("action", m_action, "list | inputs | report | progress")
+    app.add_option("action", m_action, "list | inputs | report | progress | convergence")
         ->required()
-        ->check(CLI::IsMember({"list", "inputs", "report", "progress"}));
+        ->check(CLI::IsMember({"list", "inputs", "report", "progress", "convergence"}));
     app.add_option("case", m_case, "Case id (inputs)");
     app.add_option("--set", m_set,
                    "Cases: all (default), source_study, development, or quick (the bracketing "
@@ -31,11 +33,58 @@ void HviValidateTool::addOptions(CLI::App& app) {
     app.add_option("--resolution-mm", m_resolution, "report: the spacing the runs used [mm]");
     app.add_flag("--interleave", m_interleave,
                  "list: the shield types in turn (the run order of make validate)");
+    app.add_option("--csv", m_csv, "convergence: also the table as CSV");
+    app.add_option("--plot", m_plot, "convergence: error against wall time, log-log (.svg/.png)");
+    app.add_option("--measured-hole-mm", m_measuredHoleMm,
+                   "convergence: the test's bumper hole [mm] (default: the case's, if measured)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--setup", m_setup, "convergence: one line on how the ladder was run");
     app.add_option("--jobs", m_jobs, "progress: runs side by side, for the estimate (default 1)")
         ->check(CLI::PositiveNumber);
 }
 
+void HviValidateTool::convergence() const {
+    if (m_outDir.empty()) {
+        throw InputError("<flags>", "/out_dir", "convergence needs --out-dir",
+                         "the ladder's directory (s<spacing>/ in it)");
+    }
+    const auto runs = validation::readLadder(m_outDir);
+    if (runs.empty()) {
+        throw InputError(m_outDir, "", "holds no run of the ladder",
+                         "s<spacing>/verdict.json files (make -C workflows convergence)");
+    }
+    validation::ConvergenceOptions options;
+    options.id = m_case.empty() ? fs::path(m_outDir).filename().string() : m_case;
+    options.setup = m_setup;
+    options.sourceStudyMarkdown = validation::sourceStudyTable(m_case);
+    if (m_measuredHoleMm > 0.0) {
+        options.measuredHoleMm = m_measuredHoleMm;
+    } else if (const auto measured = validation::measuredBumperHoleMm(m_case)) {
+        options.measuredHoleMm = measured;
+    }
+    if (!m_plot.empty()) {
+        const fs::path mdDir =
+            m_output == "-" ? fs::current_path() : fs::absolute(fs::path(m_output)).parent_path();
+        options.plotLink = fs::absolute(m_plot).lexically_relative(mdDir).string();
+        plot::writePlot(validation::convergencePlot(runs, options), m_plot);
+    }
+    if (!m_csv.empty()) {
+        io::writeTextAtomically(m_csv, validation::convergenceCsv(runs));
+    }
+    const std::string text = validation::convergenceMarkdown(runs, options);
+    if (m_output == "-") {
+        std::cout << text;
+        return;
+    }
+    io::writeTextAtomically(m_output, text);
+    info(options.id + ": " + std::to_string(runs.size()) + " spacings -> " + m_output);
+}
+
 void HviValidateTool::execute() {
+    if (m_action == "convergence") {
+        convergence();
+        return;
+    }
     std::vector<validation::Case> cases;
     try {
         cases = validation::selectCases(m_set);

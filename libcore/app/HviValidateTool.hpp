@@ -7,7 +7,13 @@
 //       writes DIR/panel.json (the scene writer's input), DIR/constraints.json (ble-size's)
 //       and DIR/writer (the scene writer's name);
 //   hvi-validate report --out-dir DIR [--set NAME] [--resolution-mm TEXT] -o FILE
-//       writes the markdown report from DIR/<case>/verdict.json and ble.json.
+//       writes the markdown report from DIR/<case>/verdict.json and ble.json;
+//   hvi-validate progress --out-dir DIR [--set NAME] [--jobs N]
+//       one line on stderr: cases done, left, and the time to go;
+//   hvi-validate convergence [CASE] --out-dir DIR -o FILE.md [--csv FILE] [--plot FILE.png]
+//                [--measured-hole-mm D] [--setup TEXT]
+//       the spacing ladder of DIR/s<spacing>/verdict.json (make convergence): error against
+//       run time, observed order, Richardson estimate (validation/ConvergenceReport.hpp).
 // Bad input (an unknown action, case or set) is one line naming it, exit 2, nothing written.
 #pragma once
 
@@ -26,6 +32,8 @@ protected:
     void execute() override;
 
 private:
+    void convergence() const;
+
     std::string m_action;
     std::string m_case;
     std::string m_set = "all";
@@ -34,6 +42,8 @@ private:
     std::string m_resolution;
     int m_jobs = 1;
     bool m_interleave = false;
+    std::string m_csv, m_plot, m_setup;
+    double m_measuredHoleMm = 0.0;
 };
 
 } // namespace hvi::app

@@ -167,6 +167,8 @@ void finishRearWall(Assessment& a, const AxisBand& band) {
                    end.approachingItems <
                        static_cast<std::size_t>(std::max(1, a.criteria.minCrossingItems));
     }
+    a.solverStopUnconfirmed = a.hasRunFacts && a.rearWallPerforated && !*a.rearWallPerforated &&
+                              stringFact(a.runFacts, "stop_reason", "") == "rear_wall_perforated";
 }
 
 /// Warnings about how far the verdict can be trusted, from the whole assessment.
@@ -178,13 +180,13 @@ void addEndWarnings(Assessment& a) {
                              fmt("%.4g", a.energy.maxErrorTimeUs.value_or(0.0)) +
                              " us: the run blew up");
     }
-    if (a.hasRunFacts && a.rearWallPerforated &&
-        stringFact(a.runFacts, "stop_reason", "") == "rear_wall_perforated" &&
-        !*a.rearWallPerforated) {
+    if (a.solverStopUnconfirmed) {
         a.warnings.push_back("the solver stopped on its rear-wall perforation rule (any "
                              "material behind the rear face) but the assessment finds no "
-                             "perforation (docs/metrics.md); the verdict follows the damage "
-                             "grade");
+                             "perforation (docs/metrics.md): the verdict follows the damage "
+                             "grade, and an NP is provisional (the run ended with material "
+                             "behind the wall); rerun with run.stop_on_rear_wall_perforation "
+                             "false");
     }
     if (a.axisConfined) {
         a.warnings.push_back(

@@ -73,6 +73,9 @@ struct Assessment {
     double spallMassMg = 0.0;            ///< largest detached-spall mass over the snapshots
     double bulgeMm = 0.0;                ///< largest bulge over the snapshots
     bool atRest = false;                 ///< the wall and what approaches it, at the end
+    /// The solver stopped on its own rear-wall perforation rule, which the assessment does not
+    /// confirm: the run ended when material was behind the rear face, so an NP is provisional.
+    bool solverStopUnconfirmed = false;
     std::optional<bool> rearWallPerforated;
     std::optional<double> perforationTimeUs;
     bool throughThicknessFailure = false, materialCrossed = false, detachedSpall = false;

@@ -70,7 +70,9 @@ json verdictJson(const Assessment& a) {
     v["rear_wall_perforated"] = a.rearWallPerforated ? json(*a.rearWallPerforated) : json(nullptr);
     v["axis_band_only"] = a.failed ? json(a.axisBandOnly) : json(nullptr);
     // P stands once reached; NP only once the run finished with the wall at rest.
-    v["verdict_final"] = a.failed ? json(*a.failed || (a.complete && a.atRest)) : json(nullptr);
+    v["verdict_final"] =
+        a.failed ? json(*a.failed || (a.complete && a.atRest && !a.solverStopUnconfirmed))
+                 : json(nullptr);
     v["complete"] = a.complete;
     v["run_status"] = a.status;
     const auto stop = a.runFacts.find("stop_reason");

@@ -13,8 +13,10 @@
 namespace hvi::plot {
 
 XyPlot::XyPlot()
-    : xMin(std::numeric_limits<double>::quiet_NaN()), xMax(std::numeric_limits<double>::quiet_NaN()),
-      yMin(std::numeric_limits<double>::quiet_NaN()), yMax(std::numeric_limits<double>::quiet_NaN()) {}
+    : xMin(std::numeric_limits<double>::quiet_NaN()),
+      xMax(std::numeric_limits<double>::quiet_NaN()),
+      yMin(std::numeric_limits<double>::quiet_NaN()),
+      yMax(std::numeric_limits<double>::quiet_NaN()) {}
 
 std::vector<double> niceTicks(double lo, double hi, int target) {
     std::vector<double> ticks;
@@ -36,6 +38,25 @@ std::vector<double> niceTicks(double lo, double hi, int target) {
     return ticks;
 }
 
+std::vector<double> logTicks(double lo, double hi) {
+    std::vector<double> ticks;
+    if (!(lo > 0.0) || !(hi >= lo)) {
+        return ticks;
+    }
+    const int k0 = static_cast<int>(std::floor(std::log10(lo) + 1e-9));
+    const int k1 = static_cast<int>(std::ceil(std::log10(hi) - 1e-9));
+    const bool fine = std::log10(hi / lo) < 3.0;
+    for (int k = k0; k <= k1; ++k) {
+        for (double m : {1.0, 2.0, 5.0}) {
+            const double t = m * std::pow(10.0, k);
+            if ((m == 1.0 || fine) && t >= lo * (1 - 1e-9) && t <= hi * (1 + 1e-9)) {
+                ticks.push_back(t);
+            }
+        }
+    }
+    return ticks;
+}
+
 namespace {
 
 std::string formatTick(double v, double step) {
@@ -45,7 +66,37 @@ std::string formatTick(double v, double step) {
     return buf;
 }
 
-void draw(cairo_t* cr, const XyPlot& plot) {
+std::string formatLogTick(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+/// The plot in axis units: a logarithmic axis as log10 of the data (non-positive values NaN).
+XyPlot toAxisUnits(const XyPlot& plot) {
+    auto lg = [](double v) {
+        return v > 0.0 ? std::log10(v) : std::numeric_limits<double>::quiet_NaN();
+    };
+    XyPlot out = plot;
+    for (auto& s : out.series) {
+        for (double& v : s.x) {
+            v = plot.xLog ? lg(v) : v;
+        }
+        for (double& v : s.y) {
+            v = plot.yLog ? lg(v) : v;
+        }
+    }
+    if (plot.xLog) {
+        out.xMin = lg(plot.xMin), out.xMax = lg(plot.xMax);
+    }
+    if (plot.yLog) {
+        out.yMin = lg(plot.yMin), out.yMax = lg(plot.yMax);
+    }
+    return out;
+}
+
+void draw(cairo_t* cr, const XyPlot& original) {
+    const XyPlot plot = toAxisUnits(original);
     // Data ranges.
     double x0 = plot.xMin, x1 = plot.xMax, y0 = plot.yMin, y1 = plot.yMax;
     double dx0 = 1e300, dx1 = -1e300, dy0 = 1e300, dy1 = -1e300;
@@ -62,12 +113,22 @@ void draw(cairo_t* cr, const XyPlot& plot) {
     if (dx0 > dx1) {
         dx0 = 0.0, dx1 = 1.0, dy0 = 0.0, dy1 = 1.0;
     }
-    if (std::isnan(x0)) x0 = dx0;
-    if (std::isnan(x1)) x1 = dx1;
-    if (std::isnan(y0)) y0 = std::min(0.0, dy0);
-    if (std::isnan(y1)) y1 = dy1 + 0.05 * (dy1 - y0);
-    if (x1 <= x0) x1 = x0 + 1.0;
-    if (y1 <= y0) y1 = y0 + 1.0;
+    if (std::isnan(x0))
+        x0 = dx0;
+    if (std::isnan(x1))
+        x1 = dx1;
+    if (std::isnan(y0))
+        y0 = plot.yLog ? dy0 - 0.05 * (dy1 - dy0) : std::min(0.0, dy0);
+    if (std::isnan(y1))
+        y1 = dy1 + 0.05 * (dy1 - y0);
+    if (plot.xLog && std::isnan(original.xMin)) {
+        const double pad = 0.05 * (x1 - x0);
+        x0 -= pad, x1 += pad;
+    }
+    if (x1 <= x0)
+        x1 = x0 + 1.0;
+    if (y1 <= y0)
+        y1 = y0 + 1.0;
 
     const double left = 70, right = 20, top = 40, bottom = 55;
     const double pw = plot.width - left - right, ph = plot.height - top - bottom;
@@ -80,29 +141,41 @@ void draw(cairo_t* cr, const XyPlot& plot) {
 
     // Grid and ticks.
     cairo_set_font_size(cr, 11);
-    const auto xt = niceTicks(x0, x1), yt = niceTicks(y0, y1);
-    const double xStep = xt.size() > 1 ? xt[1] - xt[0] : 1.0;
-    const double yStep = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
+    // Tick positions in axis units, with their labels.
+    auto ticksOf = [](bool log, double lo, double hi) {
+        std::vector<std::pair<double, std::string>> out;
+        if (log) {
+            for (double t : logTicks(std::pow(10.0, lo), std::pow(10.0, hi))) {
+                out.emplace_back(std::log10(t), formatLogTick(t));
+            }
+            return out;
+        }
+        const auto t = niceTicks(lo, hi);
+        const double step = t.size() > 1 ? t[1] - t[0] : 1.0;
+        for (double v : t) {
+            out.emplace_back(v, formatTick(v, step));
+        }
+        return out;
+    };
+    const auto xt = ticksOf(plot.xLog, x0, x1), yt = ticksOf(plot.yLog, y0, y1);
     cairo_set_line_width(cr, 0.5);
-    for (double t : xt) {
+    for (const auto& [t, label] : xt) {
         cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
         cairo_move_to(cr, X(t), top);
         cairo_line_to(cr, X(t), top + ph);
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0, 0, 0);
-        const std::string label = formatTick(t, xStep);
         cairo_text_extents_t ext;
         cairo_text_extents(cr, label.c_str(), &ext);
         cairo_move_to(cr, X(t) - ext.width / 2, top + ph + 16);
         cairo_show_text(cr, label.c_str());
     }
-    for (double t : yt) {
+    for (const auto& [t, label] : yt) {
         cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
         cairo_move_to(cr, left, Y(t));
         cairo_line_to(cr, left + pw, Y(t));
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0, 0, 0);
-        const std::string label = formatTick(t, yStep);
         cairo_text_extents_t ext;
         cairo_text_extents(cr, label.c_str(), &ext);
         cairo_move_to(cr, left - ext.width - 6, Y(t) + ext.height / 2);
@@ -153,6 +226,9 @@ void draw(cairo_t* cr, const XyPlot& plot) {
         } else {
             cairo_set_line_width(cr, 1.2);
             for (std::size_t k = 0; k < n; ++k) {
+                if (!std::isfinite(s.x[k]) || !std::isfinite(s.y[k])) {
+                    continue;
+                }
                 cairo_new_sub_path(cr);
                 cairo_arc(cr, X(s.x[k]), Y(s.y[k]), std::max(s.width, 3.0), 0, 2 * M_PI);
                 s.filledMarker ? cairo_fill(cr) : cairo_stroke(cr);
@@ -189,7 +265,8 @@ void draw(cairo_t* cr, const XyPlot& plot) {
 }
 
 bool endsWith(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return s.size() >= suffix.size() &&
+           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 } // namespace

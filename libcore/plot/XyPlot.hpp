@@ -1,7 +1,8 @@
 // Line and scatter plots drawn with cairo (SVG or PNG, chosen by the file extension), for the
 // ballistic limit curves of ble-size and the histories of hvi-assess.
 //
-// Deliberately small: linear axes with "nice" ticks, lines, filled or open markers, a legend.
+// Deliberately small: linear or logarithmic axes with "nice" ticks, lines, filled or open
+// markers, a legend.
 // Written atomically like every output (temporary name, then rename).
 #pragma once
 
@@ -31,6 +32,8 @@ struct XyPlot {
     double width = 720, height = 480; ///< [pt]
     /// Axis ranges; NaN = from the data.
     double xMin, xMax, yMin, yMax;
+    /// Logarithmic axes (ticks at 1, 2, 5 x 10^k; points with a value <= 0 are left out).
+    bool xLog = false, yLog = false;
     XyPlot();
 };
 
@@ -40,5 +43,9 @@ void writePlot(const XyPlot& plot, const std::string& path);
 
 /// "Nice" tick positions (1, 2, 5 x 10^k steps) covering [lo, hi] with about `target` ticks.
 std::vector<double> niceTicks(double lo, double hi, int target = 6);
+
+/// Ticks of a logarithmic axis over [lo, hi] (data units, > 0): the decades, and 2 and 5
+/// times them when the range spans less than three decades.
+std::vector<double> logTicks(double lo, double hi);
 
 } // namespace hvi::plot

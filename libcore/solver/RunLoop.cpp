@@ -334,29 +334,36 @@ std::string sceneFingerprint(const std::string& sceneText, const std::string& ma
     return core::fingerprint(scene.dump() + '\n' + materialsText);
 }
 
-/// Copies the snapshots and history rows of `previous` (an interrupted run's file) up to
-/// the checkpoint's time into `writer`; returns the time of the next snapshot due (0 when
-/// none was copied).
-double carryOver(const std::filesystem::path& previousFile, double checkpointTimeUs,
-                 double snapshotEvery, io::RunFileWriter& writer) {
-    double nextSnapshot = 0.0;
+/// Where the run's output schedule stands at a checkpoint: the snapshots and history rows
+/// written on schedule so far (not the final ones an interruption adds to its partial file),
+/// and the time of the next snapshot due. A resumed run takes exactly these from the
+/// interrupted run's file and goes on with the same schedule, so its file is the one an
+/// uninterrupted run writes.
+struct OutputSchedule {
+    std::size_t snapshots = 0;
+    std::size_t historyRows = 0;
+    double nextSnapshotUs = 0.0;
+};
+
+/// Copies the first `schedule.snapshots` snapshots and `schedule.historyRows` history rows of
+/// `previous` (an interrupted run's file) into `writer`.
+void carryOver(const std::filesystem::path& previousFile, const OutputSchedule& schedule,
+               io::RunFileWriter& writer) {
     io::RunFileReader previous(previousFile);
-    for (std::size_t k = 0; k < previous.snapshots().size(); ++k) {
+    const std::size_t snapshots = std::min(schedule.snapshots, previous.snapshots().size());
+    for (std::size_t k = 0; k < snapshots; ++k) {
         auto snap = previous.readSnapshot(static_cast<int>(k));
-        if (snap.info.timeUs <= checkpointTimeUs + 1e-12) {
-            if (snap.fe) {
-                const io::FeFieldsView feView = io::viewOf(*snap.fe);
-                writer.writeSnapshot(snap.info.timeUs, snap.info.step, io::viewOf(snap.particles),
-                                     &feView);
-            } else {
-                writer.writeSnapshot(snap.info.timeUs, snap.info.step, io::viewOf(snap.particles));
-            }
-            nextSnapshot = snap.info.timeUs + snapshotEvery;
+        if (snap.fe) {
+            const io::FeFieldsView feView = io::viewOf(*snap.fe);
+            writer.writeSnapshot(snap.info.timeUs, snap.info.step, io::viewOf(snap.particles),
+                                 &feView);
+        } else {
+            writer.writeSnapshot(snap.info.timeUs, snap.info.step, io::viewOf(snap.particles));
         }
     }
     const io::HistoryColumns h = previous.readHistory();
-    for (std::size_t k = 0; k < h.timeUs.size(); ++k) {
-        if (h.timeUs[k] <= checkpointTimeUs + 1e-12) {
+    for (std::size_t k = 0; k < std::min(schedule.historyRows, h.timeUs.size()); ++k) {
+        {
             io::HistoryRow row;
             row.timeUs = h.timeUs[k];
             row.dtUs = h.dtUs[k];
@@ -374,7 +381,30 @@ double carryOver(const std::filesystem::path& previousFile, double checkpointTim
             writer.appendHistory(row);
         }
     }
-    return nextSnapshot;
+}
+
+/// The schedule a checkpoint records (checkpoints written before it was recorded: every
+/// snapshot and row up to the checkpoint's time, the next snapshot one interval later).
+OutputSchedule scheduleOf(const io::CheckpointState& state, const std::filesystem::path& file,
+                          double snapshotEvery) {
+    const nlohmann::json& s = state.extra;
+    if (s.contains("schedule")) {
+        return {s["schedule"]["snapshots"].get<std::size_t>(),
+                s["schedule"]["history_rows"].get<std::size_t>(),
+                s["schedule"]["next_snapshot_us"].get<double>()};
+    }
+    OutputSchedule o;
+    io::RunFileReader previous(file);
+    for (const auto& info : previous.snapshots()) {
+        if (info.timeUs <= state.timeUs + 1e-12) {
+            ++o.snapshots;
+            o.nextSnapshotUs = info.timeUs + snapshotEvery;
+        }
+    }
+    for (double t : previous.readHistory().timeUs) {
+        o.historyRows += t <= state.timeUs + 1e-12 ? 1 : 0;
+    }
+    return o;
 }
 
 } // namespace
@@ -390,13 +420,16 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     const auto checkpointPath = io::checkpointPathFor(options.runFile);
 
     const std::string fingerprint = sceneFingerprint(sceneText, materialsText);
+    OutputSchedule schedule; // what has been written on schedule
     auto checkpointNow = [&]() {
         io::CheckpointState state = checkpointOf(sim, summary.maxEnergyError);
         state.extra["scene_fingerprint"] = fingerprint;
+        state.extra["schedule"] = {{"snapshots", schedule.snapshots},
+                                   {"history_rows", schedule.historyRows},
+                                   {"next_snapshot_us", schedule.nextSnapshotUs}};
         io::writeCheckpoint(checkpointPath, state);
     };
     io::RunFileWriter writer(options.runFile, sceneText, materialsText, provenance);
-    double nextSnapshot = 0.0;
     if (options.resume && std::filesystem::exists(checkpointPath)) {
         const io::CheckpointState state = io::readCheckpoint(checkpointPath);
         // A checkpoint of another scene with the same point count would restore without a
@@ -417,10 +450,11 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         // Carry the snapshots and history of the interrupted run into the new file: its run
         // file (stopped by a signal), or the temporary it left when it was killed outright.
         if (std::filesystem::exists(options.runFile)) {
-            nextSnapshot =
-                carryOver(options.runFile, state.timeUs, scene.output.snapshotEvery, writer);
+            schedule = scheduleOf(state, options.runFile, scene.output.snapshotEvery);
+            carryOver(options.runFile, schedule, writer);
         } else if (const auto orphan = io::orphanedTemporary(options.runFile)) {
-            nextSnapshot = carryOver(*orphan, state.timeUs, scene.output.snapshotEvery, writer);
+            schedule = scheduleOf(state, *orphan, scene.output.snapshotEvery);
+            carryOver(*orphan, schedule, writer);
             std::error_code ignored;
             std::filesystem::remove(*orphan, ignored); // all it held is in the new file now
             log("carried the snapshots of " + orphan->string() +
@@ -431,7 +465,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     }
 
     std::vector<double> deviator;
-    long lastSnapshotStep = -1;
+    long lastSnapshotStep = -1, lastRecordStep = -1;
     auto snapshot = [&]() {
         if (const fe::FeSolid* fe = sim.finiteElements()) {
             const std::vector<double> erosionStrain = fe->erosionStrain();
@@ -447,11 +481,12 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         const io::HistoryRow row = historyRow(sim);
         summary.maxEnergyError = std::max(summary.maxEnergyError, std::fabs(row.energyError));
         writer.appendHistory(row);
+        lastRecordStep = sim.step();
     };
     if (!summary.resumed) {
         snapshot();
         record();
-        nextSnapshot = scene.output.snapshotEvery;
+        schedule = {1, 1, scene.output.snapshotEvery};
     }
     auto lastProgress = Clock::now();
     auto lastCheckpoint = Clock::now();
@@ -465,12 +500,17 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         sim.advance();
         summary.particleSteps += static_cast<double>(sim.aliveCount());
         summary.activeParticleSteps += static_cast<double>(sim.activeCount());
+        if (const fe::FeSolid* fe = sim.finiteElements()) {
+            summary.elementSteps += static_cast<double>(fe->evaluatedCount());
+        }
         if (sim.step() % scene.output.historyEverySteps == 0) {
             record();
+            ++schedule.historyRows;
         }
-        if (sim.time() >= nextSnapshot - 1e-12) {
+        if (sim.time() >= schedule.nextSnapshotUs - 1e-12) {
             snapshot();
-            nextSnapshot += scene.output.snapshotEvery;
+            ++schedule.snapshots;
+            schedule.nextSnapshotUs += scene.output.snapshotEvery;
         }
         if (!options.quiet && secondsSince(lastProgress) >= 1.0) {
             lastProgress = Clock::now();
@@ -513,9 +553,15 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     summary.steps = sim.step() - startStep;
     summary.timeUs = sim.time();
     summary.wallSeconds = secondsSince(t0);
-    record();
+    if (!reason) {
+        checkpointNow(); // before the final row and snapshot below, which are off schedule
+    }
+    // The final state, unless it was just written.
+    if (lastRecordStep != sim.step()) {
+        record();
+    }
     if (lastSnapshotStep != sim.step()) {
-        snapshot(); // the final state, unless it was just written
+        snapshot();
     }
     const Totals t = sim.totals();
     nlohmann::json facts = {
@@ -542,7 +588,6 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     } else {
         summary.stopReason = "interrupted";
         facts["stop_reason"] = "interrupted";
-        checkpointNow();
         writer.abandon(facts);
         log("interrupted at t = " + std::to_string(sim.time()) + " us; checkpoint " +
             checkpointPath.string() + " (continue with --resume)");

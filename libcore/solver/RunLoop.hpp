@@ -19,7 +19,7 @@ namespace hvi::solver {
 extern std::atomic<bool> g_stopRequested;
 
 struct RunOptions {
-    std::string runFile;                 ///< the HDF5 run file to write
+    std::string runFile; ///< the HDF5 run file to write
     int threads = 1;
     bool quiet = false;
     double checkpointEverySeconds = 300; ///< wall time between checkpoints (0 = never)
@@ -28,13 +28,14 @@ struct RunOptions {
 
 struct RunSummary {
     std::string stopReason;
-    bool complete = false;       ///< false when interrupted
+    bool complete = false; ///< false when interrupted
     double wallSeconds = 0.0;
     long steps = 0;
     double timeUs = 0.0;
     double maxEnergyError = 0.0; ///< max |energy error| over the history rows
     double particleSteps = 0.0;  ///< sum over steps of alive particles
     double activeParticleSteps = 0.0;
+    double elementSteps = 0.0; ///< sum over steps of FE elements evaluated
     std::size_t particles = 0;
     bool resumed = false;
 };

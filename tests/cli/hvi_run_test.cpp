@@ -27,6 +27,49 @@ const char* kScene = R"({"id": "cli-small", "geometry": "axisymmetric",
     {"name": "plate", "role": "bumper", "material": "Al6061-T6",
      "shape": {"type": "plate", "z_front_mm": 0.0, "thickness_mm": 0.5, "outer_radius_mm": 3.0}}
   ]})";
+/// The kScene run to 8 us with a snapshot every 1 us: long enough (a second or more) to be
+/// interrupted after its first checkpoint.
+std::string longScene() {
+    std::string text = kScene;
+    auto set = [&text](const std::string& from, const std::string& to) {
+        text.replace(text.find(from), from.size(), to);
+    };
+    set("\"end_time_us\": 0.3", "\"end_time_us\": 8.0");
+    set("\"snapshot_every_us\": 0.1", "\"snapshot_every_us\": 1.0");
+    return text;
+}
+
+/// The run file of the long scene run straight through (made once).
+std::filesystem::path uninterruptedRun() {
+    static const std::filesystem::path run = [] {
+        const auto scene = writeTemp("straight.json", longScene());
+        const auto path = tempPath("straight.h5");
+        std::filesystem::remove(path);
+        const auto r =
+            runTool("hvi-run", scene.string() + " -o " + path.string() + " --threads 1 -q");
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return path;
+    }();
+    return run;
+}
+
+/// h5diff's verdict on the snapshots and the history of two run files ("" when identical;
+/// /run's wall time and the resumed flag may differ, the computed results not).
+std::string resultsDiffer(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::string said;
+    for (const char* group : {"/snapshots", "/history"}) {
+        const auto out = tempPath("h5diff.out");
+        const std::string cmd = "h5diff -r " + a.string() + " " + b.string() + " " + group + " " +
+                                group + " >" + out.string() + " 2>&1";
+        if (std::system(cmd.c_str()) != 0) {
+            std::ifstream in(out);
+            std::stringstream text;
+            text << in.rdbuf();
+            said += std::string(group) + ": " + text.str().substr(0, 2000) + "\n";
+        }
+    }
+    return said;
+}
 } // namespace
 
 TEST(HviRunCli, SmallSceneWritesRunFileAndSidecar) {
@@ -96,12 +139,7 @@ TEST(HviRunCli, ResumeWithoutACheckpointIsRefused) {
 // did not resume at all); now it carries them over from that temporary and removes it. A
 // checkpoint of another scene is refused.
 TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
-    std::string text = kScene;
-    auto set = [&text](const std::string& from, const std::string& to) {
-        text.replace(text.find(from), from.size(), to);
-    };
-    set("\"end_time_us\": 0.3", "\"end_time_us\": 8.0");
-    set("\"snapshot_every_us\": 0.1", "\"snapshot_every_us\": 1.0");
+    const std::string text = longScene();
     const auto scene = writeTemp("killed.json", text);
     const auto run = tempPath("killed.h5");
     const auto checkpoint = tempPath("killed.ckpt.h5");
@@ -143,6 +181,86 @@ TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
     const auto history = reader.readHistory();
     ASSERT_FALSE(history.timeUs.empty());
     EXPECT_EQ(history.timeUs.front(), 0.0);
+    EXPECT_EQ(resultsDiffer(uninterruptedRun(), run), "");
+}
+
+// A run stopped by SIGINT (or SIGHUP: a closed terminal) and resumed used to gain a snapshot
+// and a history row at the stop and restart its snapshot schedule from there (issue #25, item
+// 12); its snapshots and history are now those of the run made straight through.
+TEST(HviRunCli, AStoppedAndResumedRunIsTheUninterruptedOne) {
+    const auto scene = writeTemp("stopped.json", longScene());
+    for (const char* signal : {"INT", "HUP"}) {
+        SCOPED_TRACE(signal);
+        const auto run = tempPath("stopped.h5");
+        const auto checkpoint = tempPath("stopped.ckpt.h5");
+        std::filesystem::remove(run);
+        std::filesystem::remove(checkpoint);
+        // Stop it once its first periodic checkpoint exists (0.3 s of wall time in), so the
+        // stop falls between scheduled snapshots, after some history.
+        const std::string script =
+            toolPath("hvi-run").string() + " " + scene.string() + " -o " + run.string() +
+            " --threads 1 -q --checkpoint-every-s 0.3 & p=$!; i=0; while [ ! -f " +
+            checkpoint.string() + " ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i+1)); done; " +
+            "kill -" + signal + " $p; wait $p; exit $?";
+        const int status = std::system(script.c_str());
+        ASSERT_TRUE(WIFEXITED(status));
+        if (WEXITSTATUS(status) == 0) {
+            GTEST_SKIP() << "the run finished before it could be stopped (machine too fast)";
+        }
+        ASSERT_EQ(WEXITSTATUS(status), 4) << "interrupted";
+        ASSERT_TRUE(std::filesystem::exists(run)) << "the partial run file";
+        ASSERT_TRUE(std::filesystem::exists(checkpoint));
+        EXPECT_NE(resultsDiffer(uninterruptedRun(), run), "") << "a partial run is partial";
+
+        const auto r =
+            runTool("hvi-run", scene.string() + " -o " + run.string() + " --threads 1 --resume");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(resultsDiffer(uninterruptedRun(), run), "");
+        EXPECT_FALSE(std::filesystem::exists(checkpoint));
+    }
+}
+
+// An FE-only scene's summary said "N particles" (its erosion slots) and "0 particle-steps/s";
+// it now counts what the scene holds and gives the element throughput.
+TEST(HviRunCli, AnFeOnlySceneIsSummarisedInElements) {
+    const auto scene = writeTemp("feonly.json", R"({"id": "fe-only", "geometry": "axisymmetric",
+      "fe": {"element_size_mm": 0.1},
+      "run": {"end_time_us": 0.05, "stop_debris_speed_km_s": 0, "stop_no_new_penetration_us": 0},
+      "domain": {"radius_mm": 3.5},
+      "bodies": [
+        {"name": "flyer", "role": "projectile", "material": "Al6061-T6", "discretization": "fe",
+         "shape": {"type": "rectangle", "z_min_mm": -0.5, "z_max_mm": 0.0, "r_min_mm": 0.0,
+                   "r_max_mm": 1.0}, "velocity": {"z_km_s": 1.0}},
+        {"name": "plate", "role": "rear_wall", "material": "Al6061-T6", "discretization": "fe",
+         "shape": {"type": "plate", "z_front_mm": 0.0, "thickness_mm": 0.5, "outer_radius_mm": 3.0}}
+      ]})");
+    const auto run = tempPath("feonly.h5");
+    std::filesystem::remove(run);
+    const auto r = runTool("hvi-run", scene.string() + " -o " + run.string() + " --threads 1");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find(": 0 SPH particles, 200 FE elements, 2 bodies"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("element-steps/s;"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("particle-steps/s"), std::string::npos) << r.err;
+}
+
+// The final history row used to be written twice when the last step fell on the history
+// cadence.
+TEST(HviRunCli, TheLastHistoryRowIsWrittenOnce) {
+    std::string text = kScene;
+    const std::string from = "\"snapshot_every_us\": 0.1";
+    text.replace(text.find(from), from.size(), from + ", \"history_every_steps\": 1");
+    const auto scene = writeTemp("everystep.json", text);
+    const auto run = tempPath("everystep.h5");
+    std::filesystem::remove(run);
+    const auto r = runTool("hvi-run", scene.string() + " -o " + run.string() + " --threads 1 -q");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    hvi::io::RunFileReader reader(run.string());
+    const auto h = reader.readHistory();
+    ASSERT_GE(h.step.size(), 2u);
+    for (std::size_t k = 1; k < h.step.size(); ++k) {
+        EXPECT_LT(h.step[k - 1], h.step[k]) << "row " << k;
+    }
 }
 
 // Two hvi-run on one -o both exited 0 and the last rename won (issue #25, item 13): the second

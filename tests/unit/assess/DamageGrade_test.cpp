@@ -78,6 +78,32 @@ TEST(DamageGrade, ABulgeWithoutFailureIsNotAFailure) {
     EXPECT_TRUE(g.final);
 }
 
+TEST(DamageGrade, ASolverStopOnAPerforationNotFoundLeavesTheNpProvisional) {
+    // The same bulge, at rest, but the solver ended the run on its own perforation rule (at
+    // extreme speed, debris behind the rear face; issue #25, item 14): the NP stands on the
+    // damage grade but is not final, and the warning says why.
+    SyntheticRun run(test::whippleScene());
+    auto& snap = run.addSnapshot(1.0);
+    run.forBody(snap, "projectile", [&](std::size_t i) { snap.vz[i] = 0.0; });
+    moveWall(run, snap, 0.3, 0.0, 0.0, [](double, double r0) { return r0 < 1.0; });
+    const auto path = run.write(test::tempPath("grade_solver_stop.h5"), test::Ending::Complete,
+                                {{"wall_time_s", 1.0},
+                                 {"threads", 1},
+                                 {"stop_reason", "rear_wall_perforated"},
+                                 {"steps", 10}});
+    const io::RunFileReader reader(path);
+    const auto a = assess::assessRun(reader, {});
+    const auto v = assess::verdictJson(a);
+    EXPECT_EQ(v["verdict"], "NP");
+    EXPECT_EQ(v["verdict_final"], false);
+    EXPECT_EQ(v["rear_wall"]["solver_stop_rule_fired"], true);
+    bool said = false;
+    for (const auto& w : a.warnings) {
+        said = said || w.find("an NP is provisional") != std::string::npos;
+    }
+    EXPECT_TRUE(said);
+}
+
 TEST(DamageGrade, ABulgeBelowOneSpacingIsNone) {
     SyntheticRun run(test::whippleScene());
     auto& snap = run.addSnapshot(1.0);

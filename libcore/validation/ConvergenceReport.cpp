@@ -1,0 +1,260 @@
+#include "validation/ConvergenceReport.hpp"
+
+#include "core/Error.hpp"
+#include "io/JsonInput.hpp"
+#include "io/Resources.hpp"
+#include "validation/Richardson.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace hvi::validation {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fmt(const char* format, double value) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, value);
+    return buf;
+}
+
+std::string opt(const std::optional<double>& v, const char* format) {
+    return v ? fmt(format, *v) : std::string("–");
+}
+
+std::optional<double> number(const json& doc, const char* pointer) {
+    const json::json_pointer p(pointer);
+    return doc.contains(p) && doc.at(p).is_number() ? std::optional<double>(doc.at(p).get<double>())
+                                                    : std::nullopt;
+}
+
+/// A metric over the ladder, with its extrapolation when every spacing has a value.
+struct Metric {
+    std::string name, unit;
+    std::vector<double> h, f;
+    Extrapolation e;
+};
+
+Metric metricOf(const std::vector<LadderRun>& runs, const std::string& name,
+                const std::string& unit, std::optional<double> LadderRun::*field) {
+    Metric m{name, unit, {}, {}, {}};
+    for (const auto& r : runs) {
+        if (r.*field) {
+            m.h.push_back(r.spacingMm);
+            m.f.push_back(*(r.*field));
+        }
+    }
+    m.e = richardson(m.h, m.f);
+    return m;
+}
+
+/// |value / reference - 1| [%].
+std::optional<double> errorPercent(const std::optional<double>& value,
+                                   const std::optional<double>& reference) {
+    if (!value || !reference || *reference == 0.0) {
+        return std::nullopt;
+    }
+    return 100.0 * std::fabs(*value / *reference - 1.0);
+}
+
+std::optional<double> estimate(const Metric& m) {
+    return m.e.ok ? std::optional<double>(m.e.limit) : std::nullopt;
+}
+
+} // namespace
+
+std::vector<LadderRun> readLadder(const fs::path& outDir) {
+    std::vector<LadderRun> runs;
+    if (!fs::is_directory(outDir)) {
+        return runs;
+    }
+    for (const auto& entry : fs::directory_iterator(outDir)) {
+        const std::string name = entry.path().filename().string();
+        const fs::path file = entry.path() / "verdict.json";
+        if (!entry.is_directory() || name.size() < 2 || name[0] != 's' || !fs::exists(file)) {
+            continue;
+        }
+        LadderRun r;
+        try {
+            r.spacingMm = std::stod(name.substr(1));
+        } catch (const std::exception&) {
+            continue; // not a ladder point
+        }
+        const json v = io::readJsonFile(file.string());
+        if (!v.contains("verdict") || !v.contains("counts")) {
+            throw InputError(file.string(), "/verdict", "is not a verdict of hvi-assess",
+                             "the verdict.json hvi-assess writes");
+        }
+        r.verdict = v["verdict"].is_string() ? v["verdict"].get<std::string>() : "–";
+        r.grade = v.value("damage_grade", json("")).is_string()
+                      ? v.value("damage_grade", std::string())
+                      : std::string();
+        r.holeMm = number(v, "/bumper_hole_diameter_mm");
+        r.depthMm = number(v, "/penetration_depth_mm");
+        r.energyError = number(v, "/energy_error");
+        r.wallS = number(v, "/wall_time_s");
+        r.particles = number(v, "/counts/particles");
+        r.elements = number(v, "/counts/elements");
+        r.steps = number(v, "/run/steps");
+        runs.push_back(r);
+    }
+    std::sort(runs.begin(), runs.end(),
+              [](const auto& a, const auto& b) { return a.spacingMm > b.spacingMm; });
+    return runs;
+}
+
+std::string convergenceCsv(const std::vector<LadderRun>& runs) {
+    std::ostringstream csv;
+    csv << "spacing_mm,sph_particles,fe_elements,steps,wall_time_s,bumper_hole_diameter_mm,"
+           "penetration_depth_mm,verdict,damage_grade,energy_error\n";
+    auto cell = [](const std::optional<double>& v, const char* f) {
+        return v ? fmt(f, *v) : std::string();
+    };
+    for (const auto& r : runs) {
+        csv << fmt("%g", r.spacingMm) << "," << cell(r.particles, "%.0f") << ","
+            << cell(r.elements, "%.0f") << "," << cell(r.steps, "%.0f") << ","
+            << cell(r.wallS, "%.1f") << "," << cell(r.holeMm, "%.4f") << ","
+            << cell(r.depthMm, "%.4f") << "," << r.verdict << "," << r.grade << ","
+            << cell(r.energyError, "%.3e") << "\n";
+    }
+    return csv.str();
+}
+
+std::string convergenceMarkdown(const std::vector<LadderRun>& runs,
+                                const ConvergenceOptions& options) {
+    const Metric hole = metricOf(runs, "bumper hole diameter", "mm", &LadderRun::holeMm);
+    const Metric depth = metricOf(runs, "penetration depth", "mm", &LadderRun::depthMm);
+    std::ostringstream md;
+    md << "# Convergence: error against run time\n\n"
+       << "Generated by `make -C workflows convergence` (`hvi-validate convergence`); do not "
+          "edit by hand. Case `"
+       << options.id << "`" << (options.setup.empty() ? "" : ": " + options.setup)
+       << ". Errors are relative: the bumper hole against its measurement"
+       << (options.measuredHoleMm ? " (" + fmt("%g", *options.measuredHoleMm) + " mm)" : "")
+       << ", and each metric against its Richardson estimate at zero spacing from the three "
+          "finest spacings (below).\n\n"
+       << "| spacing mm | SPH particles | FE elements | steps | wall s | bumper hole mm | "
+          "vs measured | vs estimate | penetration mm | vs estimate | verdict | energy error "
+          "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& r : runs) {
+        md << "| " << fmt("%g", r.spacingMm) << " | " << opt(r.particles, "%.0f") << " | "
+           << opt(r.elements, "%.0f") << " | " << opt(r.steps, "%.0f") << " | "
+           << opt(r.wallS, "%.0f") << " | " << opt(r.holeMm, "%.2f") << " | "
+           << opt(errorPercent(r.holeMm, options.measuredHoleMm), "%.1f %%") << " | "
+           << opt(errorPercent(r.holeMm, estimate(hole)), "%.1f %%") << " | "
+           << opt(r.depthMm, "%.2f") << " | "
+           << opt(errorPercent(r.depthMm, estimate(depth)), "%.1f %%") << " | " << r.verdict
+           << " | " << opt(r.energyError, "%.1e") << " |\n";
+    }
+    md << "\n## Observed order and estimate at zero spacing\n\n"
+       << "Model f(h) = f0 + C h^p through the three finest spacings "
+          "(`libcore/validation/Richardson.hpp`).\n\n"
+       << "| metric | observed order p | estimate f0 | note |\n|---|---|---|---|\n";
+    for (const Metric* m : {&hole, &depth}) {
+        md << "| " << m->name << " | " << (m->e.ok ? fmt("%.2f", m->e.order) : "–") << " | "
+           << (m->e.ok ? fmt("%.3f", m->e.limit) + " " + m->unit : "–") << " | "
+           << (m->e.ok ? "" : m->e.reason) << " |\n";
+    }
+    if (!options.sourceStudyMarkdown.empty()) {
+        md << "\n## The source study's particle-size study of the same case\n\n"
+           << options.sourceStudyMarkdown;
+    }
+    if (!options.plotLink.empty()) {
+        md << "\n![Error against wall time, log-log](" << options.plotLink << ")\n";
+    }
+    return md.str();
+}
+
+plot::XyPlot convergencePlot(const std::vector<LadderRun>& runs,
+                             const ConvergenceOptions& options) {
+    const Metric hole = metricOf(runs, "bumper hole diameter", "mm", &LadderRun::holeMm);
+    const Metric depth = metricOf(runs, "penetration depth", "mm", &LadderRun::depthMm);
+    plot::XyPlot p;
+    p.title = "Error against run time: " + options.id;
+    p.xLabel = "wall time [s]";
+    p.yLabel = "error [%]";
+    p.xLog = p.yLog = true;
+    auto series = [&](const std::string& label, plot::Rgb color, auto errorOf) {
+        plot::Series s;
+        s.label = label;
+        s.color = color;
+        s.width = 2.0;
+        for (const auto& r : runs) {
+            const auto e = errorOf(r);
+            if (r.wallS && e) {
+                s.x.push_back(*r.wallS);
+                s.y.push_back(*e);
+            }
+        }
+        if (!s.x.empty()) {
+            p.series.push_back(s);
+        }
+    };
+    if (options.measuredHoleMm) {
+        series("bumper hole vs measured", {0.8, 0.1, 0.1},
+               [&](const LadderRun& r) { return errorPercent(r.holeMm, options.measuredHoleMm); });
+    }
+    series("bumper hole vs estimate", {0.9, 0.5, 0.1},
+           [&](const LadderRun& r) { return errorPercent(r.holeMm, estimate(hole)); });
+    series("penetration vs estimate", {0.1, 0.3, 0.7},
+           [&](const LadderRun& r) { return errorPercent(r.depthMm, estimate(depth)); });
+    series("energy error", {0.2, 0.6, 0.2}, [](const LadderRun& r) {
+        return r.energyError ? std::optional<double>(100.0 * std::fabs(*r.energyError))
+                             : std::nullopt;
+    });
+    return p;
+}
+
+namespace {
+json thesisCases() {
+    return json::parse(resources::get("data/validation/thesis_cases.json"));
+}
+} // namespace
+
+std::optional<double> measuredBumperHoleMm(const std::string& caseId) {
+    const json doc = thesisCases();
+    for (const auto& block : doc.items()) {
+        if (!block.value().is_array()) {
+            continue;
+        }
+        for (const auto& c : block.value()) {
+            if (c.is_object() && c.value("id", "") == caseId) {
+                return number(c, "/expected/bumper_hole_diameter_mm");
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+std::string sourceStudyTable(const std::string& caseId) {
+    const json doc = thesisCases();
+    const json::json_pointer at("/calibration/particle_size_study");
+    if (!doc.contains(at) || doc.at(at).value("case_id", "") != caseId) {
+        return {};
+    }
+    const json& study = doc.at(at);
+    std::ostringstream md;
+    md << study.value("case", "") << "; measured hole "
+       << fmt("%g", study.value("measured_hole_diameter_mm", 0.0)) << " mm "
+       << "(thesis, Sec. 3.3.1; Autodyn):\n\n"
+       << "| spacing mm | hole mm | error | reported run time | note |\n|---|---|---|---|---|\n";
+    for (const auto& r : study.at("results")) {
+        auto text = [&](const char* key, const char* format) {
+            return r.contains(key) && r[key].is_number() ? fmt(format, r[key].get<double>())
+                                                         : std::string("–");
+        };
+        md << "| " << text("particle_size_mm", "%g") << " | " << text("hole_diameter_mm", "%g")
+           << " | " << text("error_percent", "%g %%") << " | "
+           << r.value("reported_run_time", std::string("–")) << " | "
+           << r.value("note", std::string()) << " |\n";
+    }
+    return md.str();
+}
+
+} // namespace hvi::validation
