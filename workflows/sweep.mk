@@ -36,7 +36,7 @@ ifeq ($(strip $(CASE)$(PANEL)),)
 $(error give the shield: CASE=<validation id> or PANEL=<scene writer input> WRITER=<writer>)
 endif
 
-.PHONY: sweep
+.PHONY: sweep slurm-sweep
 .DELETE_ON_ERROR:
 # Keep each point's scene and run file (not .SECONDARY for everything: that would make the
 # per-speed results intermediate, and a removed one would not be remade).
@@ -65,4 +65,14 @@ $(CRITICAL_FILES): $(OUT)/v%/critical.json: $(OUT)/v%/sweep.json
 	  echo "sweep: v$*: $$(basename $$p) $$(grep -m1 '"verdict"' $$p/verdict.json | tr -d ' ,')"; \
 	done
 
+# The speeds as a Slurm job array (slurm.mk): one task per speed runs its search, the collect
+# job the CSV and plot.
+slurm-sweep:
+	$(call slurm_array,$(OUT)/slurm/sweep.sbatch,hvi-sweep,$(CRITICAL_FILES),sweep.mk,$(if \
+	  $(CASE),CASE=$(CASE),PANEL=$(abspath $(PANEL)) WRITER=$(WRITER) $(if \
+	  $(CONSTRAINTS),CONSTRAINTS=$(abspath $(CONSTRAINTS)))) PARAMETER=$(PARAMETER) \
+	  SPEEDS="$(SPEEDS)" TOLERANCE_MM=$(TOLERANCE_MM) RESOLUTION=$(RESOLUTION) BIN=$(BIN) \
+	  OUT=$(OUT) $(if $(MATERIALS),MATERIALS=$(abspath $(MATERIALS))),sweep)
+
 include $(ROOT)/workflows/run-rules.mk
+include $(ROOT)/workflows/slurm.mk

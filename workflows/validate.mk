@@ -37,7 +37,7 @@ AFTER_VERDICT = @$(HVI_VALIDATE) progress --set $(SET) --out-dir $(OUT) --jobs $
 # run again.
 ARCHIVE ?= $(ROOT)/data/validation/verdicts/$(RESOLUTION)
 
-.PHONY: validate validate-ble validate-keep validate-forget
+.PHONY: validate validate-ble validate-keep validate-forget slurm-validate
 .SECONDARY:
 .DELETE_ON_ERROR:
 
@@ -59,6 +59,13 @@ validate-keep:
 	  then cp -p $(OUT)/$$c/verdict.json $(ARCHIVE)/$$c.json; n=$$((n+1)); fi; done; \
 	echo "validate-keep: $$n new verdicts -> $(ARCHIVE)"
 
+# The cases as a Slurm job array (slurm.mk), the report by the collect job.
+slurm-validate:
+	$(call slurm_array,$(OUT)/slurm/validate.sbatch,hvi-validate,$(foreach \
+	  c,$(CASES),$(OUT)/$(c)/verdict.json),validate.mk,SET=$(SET) RESOLUTION=$(RESOLUTION) \
+	  BIN=$(BIN) OUT=$(OUT) REPORT=$(REPORT) ARCHIVE=$(ARCHIVE) $(if $(MATERIALS),MATERIALS=$(abspath \
+	  $(MATERIALS))) $(if $(END_TIME_US),END_TIME_US=$(END_TIME_US)),validate)
+
 validate-forget:
 	rm -f $(foreach c,$(CASES),$(ARCHIVE)/$(c).json)
 
@@ -73,3 +80,4 @@ $(OUT)/%/ble.json: $(OUT)/%/panel.json
 	$(BIN)/ble-size/ble-size $(OUT)/$*/constraints.json -o $@ 2>$(OUT)/$*/ble.log
 
 include $(ROOT)/workflows/run-rules.mk
+include $(ROOT)/workflows/slurm.mk

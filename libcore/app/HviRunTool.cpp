@@ -5,6 +5,7 @@
 #include "io/Checkpoint.hpp"
 #include "io/JsonInput.hpp"
 #include "io/RunLock.hpp"
+#include "scene/BodyLayout.hpp"
 #include "scene/PointBudget.hpp"
 #include "scene/Scene.hpp"
 #include "solver/RunLoop.hpp"
@@ -256,6 +257,9 @@ void HviRunTool::execute() {
     }
     const scene::Scene scene = scene::parseScene(doc, m_scene, library.names());
     scene::requirePointBudget(scene, m_scene, scene::availableMemoryBytes());
+    for (const auto& w : scene::bodyLayoutWarnings(scene)) {
+        warn(m_scene + ": " + w);
+    }
 
     solver::Simulation sim(scene, library);
     json materials = json::object();

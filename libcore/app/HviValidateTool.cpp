@@ -57,6 +57,7 @@ void HviValidateTool::convergence() const {
     options.id = m_case.empty() ? fs::path(m_outDir).filename().string() : m_case;
     options.setup = m_setup;
     options.sourceStudyMarkdown = validation::sourceStudyTable(m_case);
+    options.sourceStudyPoints = validation::sourceStudyPoints(m_case);
     if (m_measuredHoleMm > 0.0) {
         options.measuredHoleMm = m_measuredHoleMm;
     } else if (const auto measured = validation::measuredBumperHoleMm(m_case)) {

@@ -96,4 +96,38 @@ std::vector<InputIssue> bodyLayoutIssues(const Scene& scene, const std::string& 
     return issues;
 }
 
+std::vector<std::string> bodyLayoutWarnings(const Scene& scene) {
+    std::vector<std::string> warnings;
+    bool anyMoving = false;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const Body& a = scene.bodies[i];
+        anyMoving = anyMoving || a.velocityZ != 0.0 || a.velocityR != 0.0;
+        if (a.velocityZ == 0.0) {
+            continue;
+        }
+        // Ahead: another body beyond a's leading face in the direction of travel whose radial
+        // extent overlaps a's.
+        bool target = false;
+        for (std::size_t j = 0; j < scene.bodies.size() && !target; ++j) {
+            const Shape& b = scene.bodies[j].shape;
+            if (j == i || b.boundRMin() >= a.shape.boundRMax() ||
+                a.shape.boundRMin() >= b.boundRMax()) {
+                continue;
+            }
+            target = a.velocityZ > 0.0 ? b.boundZMax() > a.shape.boundZMax()
+                                       : b.boundZMin() < a.shape.boundZMin();
+        }
+        if (!target) {
+            warnings.push_back("body '" + a.name + "' moves " +
+                               (a.velocityZ > 0.0 ? "downstream" : "upstream") +
+                               " along the axis but no body lies in its path: it will strike "
+                               "nothing (check its velocity's sign and the bodies' radii)");
+        }
+    }
+    if (!anyMoving && !scene.bodies.empty()) {
+        warnings.push_back("no body moves: nothing will happen (give the projectile a velocity)");
+    }
+    return warnings;
+}
+
 } // namespace hvi::scene

@@ -25,6 +25,11 @@ namespace hvi::scene {
 /// `file` at /bodies/N/shape; empty when the layout is sound.
 std::vector<InputIssue> bodyLayoutIssues(const Scene& scene, const std::string& file);
 
+/// What is legal but most likely a mistake, one line each: a body moving along the axis with
+/// nothing ahead of it in its path (no other body downstream whose radial extent meets its
+/// own), and a scene in which nothing moves at all.
+std::vector<std::string> bodyLayoutWarnings(const Scene& scene);
+
 /// How deep shapes a and b overlap [mm]: the least distance either must move to clear the
 /// other (<= 0: apart or touching). Exposed for the tests.
 double overlapDepth(const Shape& a, const Shape& b);

@@ -157,9 +157,10 @@ std::string convergenceMarkdown(const std::vector<LadderRun>& runs,
           "(`libcore/validation/Richardson.hpp`).\n\n"
        << "| metric | observed order p | estimate f0 | note |\n|---|---|---|---|\n";
     for (const Metric* m : {&hole, &depth}) {
-        md << "| " << m->name << " | " << (m->e.ok ? fmt("%.2f", m->e.order) : "–") << " | "
-           << (m->e.ok ? fmt("%.3f", m->e.limit) + " " + m->unit : "–") << " | "
-           << (m->e.ok ? "" : m->e.reason) << " |\n";
+        const bool same = m->e.ok && !std::isfinite(m->e.order);
+        md << "| " << m->name << " | " << (m->e.ok && !same ? fmt("%.2f", m->e.order) : "–")
+           << " | " << (m->e.ok ? fmt("%.3f", m->e.limit) + " " + m->unit : "–") << " | "
+           << (same ? "the same value at the three finest spacings" : m->e.reason) << " |\n";
     }
     if (!options.sourceStudyMarkdown.empty()) {
         md << "\n## The source study's particle-size study of the same case\n\n"
@@ -204,6 +205,18 @@ plot::XyPlot convergencePlot(const std::vector<LadderRun>& runs,
            [&](const LadderRun& r) { return errorPercent(r.holeMm, estimate(hole)); });
     series("penetration vs estimate", {0.1, 0.3, 0.7},
            [&](const LadderRun& r) { return errorPercent(r.depthMm, estimate(depth)); });
+    if (!options.sourceStudyPoints.empty()) {
+        plot::Series study;
+        study.label = "source study (Autodyn), hole vs measured";
+        study.color = {0.5, 0.1, 0.5};
+        study.line = false;
+        study.width = 4.0;
+        for (const auto& [wallS, errorPercent] : options.sourceStudyPoints) {
+            study.x.push_back(wallS);
+            study.y.push_back(errorPercent);
+        }
+        p.series.push_back(study);
+    }
     series("energy error", {0.2, 0.6, 0.2}, [](const LadderRun& r) {
         return r.energyError ? std::optional<double>(100.0 * std::fabs(*r.energyError))
                              : std::nullopt;
@@ -232,13 +245,39 @@ std::optional<double> measuredBumperHoleMm(const std::string& caseId) {
     return std::nullopt;
 }
 
-std::string sourceStudyTable(const std::string& caseId) {
+namespace {
+/// The particle-size study when it is of `caseId`; null otherwise.
+json studyOf(const std::string& caseId) {
     const json doc = thesisCases();
     const json::json_pointer at("/calibration/particle_size_study");
     if (!doc.contains(at) || doc.at(at).value("case_id", "") != caseId) {
+        return nullptr;
+    }
+    return doc.at(at);
+}
+} // namespace
+
+std::vector<std::pair<double, double>> sourceStudyPoints(const std::string& caseId) {
+    std::vector<std::pair<double, double>> points;
+    const json study = studyOf(caseId);
+    if (study.is_null()) {
+        return points;
+    }
+    for (const auto& r : study.at("results")) {
+        const auto hours = number(r, "/reported_run_time_h");
+        const auto error = number(r, "/error_percent");
+        if (hours && error) {
+            points.emplace_back(3600.0 * *hours, *error);
+        }
+    }
+    return points;
+}
+
+std::string sourceStudyTable(const std::string& caseId) {
+    const json study = studyOf(caseId);
+    if (study.is_null()) {
         return {};
     }
-    const json& study = doc.at(at);
     std::ostringstream md;
     md << study.value("case", "") << "; measured hole "
        << fmt("%g", study.value("measured_hole_diameter_mm", 0.0)) << " mm "

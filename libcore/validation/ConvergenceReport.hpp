@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hvi::validation {
@@ -37,6 +38,8 @@ struct ConvergenceOptions {
     /// The source study's own particle-size study of this case (thesis_cases.json
     /// calibration.particle_size_study), when it has one; null otherwise.
     std::string sourceStudyMarkdown;
+    /// Its runs as (wall time [s], hole error [%]) for the plot, where both are reported.
+    std::vector<std::pair<double, double>> sourceStudyPoints;
     std::string plotLink; ///< the plot's path as the markdown links it (empty: no plot)
 };
 
@@ -50,6 +53,10 @@ plot::XyPlot convergencePlot(const std::vector<LadderRun>& runs, const Convergen
 /// The source study's particle-size study of `caseId` as a markdown table (empty when the
 /// study was of another case).
 std::string sourceStudyTable(const std::string& caseId);
+
+/// The source study's runs of `caseId` as (wall time [s], hole error [%]) where it reports
+/// both (empty for another case).
+std::vector<std::pair<double, double>> sourceStudyPoints(const std::string& caseId);
 
 /// The measured bumper hole of a source-study case (thesis_cases.json expected
 /// bumper_hole_diameter_mm), when it has one.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -30,8 +31,8 @@ Extrapolation richardson(std::vector<double> spacings, std::vector<double> value
     }
     const double d12 = f1 - f2, d23 = f2 - f3;
     if (d23 == 0.0 && d12 == 0.0) {
-        e.ok = true; // converged to the last digit
-        e.order = kMaxOrder;
+        e.ok = true; // converged to the last digit: no order to observe
+        e.order = std::numeric_limits<double>::infinity();
         e.limit = f3;
         return e;
     }

@@ -24,7 +24,7 @@ constexpr double kMinOrder = 0.1, kMaxOrder = 8.0;
 
 struct Extrapolation {
     bool ok = false;
-    double order = 0.0; ///< observed order p
+    double order = 0.0; ///< observed order p (infinite: the same value at all three)
     double limit = 0.0; ///< f0, the estimate at zero spacing
     std::string reason; ///< why there is no estimate (empty when ok)
 };

@@ -101,3 +101,26 @@ TEST(BodyLayout, ALayerStackThatTouchesIsAccepted) {
     EXPECT_EQ(refusal(doc), "");
     EXPECT_EQ(refusal(test::layerScene()), "");
 }
+
+TEST(BodyLayout, AProjectileWithNothingInItsPathIsWarnedOf) {
+    // As built: the ball flies into its bumper, no warning.
+    EXPECT_TRUE(scene::bodyLayoutWarnings(test::makeScene(twoBodies(-0.6))).empty());
+    // Flying away from it (the velocity's sign wrong).
+    auto away = twoBodies(-0.6);
+    away["bodies"][0]["velocity"]["z_km_s"] = -3.0;
+    auto w = scene::bodyLayoutWarnings(test::makeScene(away));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_NE(w[0].find("body 'projectile' moves upstream"), std::string::npos) << w[0];
+    // Beside it: a ring plate that starts beyond the ball's radius.
+    auto beside = twoBodies(-0.6);
+    beside["bodies"][1]["shape"]["inner_radius_mm"] = 1.0;
+    w = scene::bodyLayoutWarnings(test::makeScene(beside));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_NE(w[0].find("no body lies in its path"), std::string::npos) << w[0];
+    // Nothing moves.
+    auto still = twoBodies(-0.6);
+    still["bodies"][0].erase("velocity");
+    w = scene::bodyLayoutWarnings(test::makeScene(still));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_NE(w[0].find("no body moves"), std::string::npos) << w[0];
+}

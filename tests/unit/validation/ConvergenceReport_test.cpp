@@ -61,6 +61,10 @@ TEST(ConvergenceReport, OrderEstimateAndErrorsOfAnExactLadder) {
     const std::string md = validation::convergenceMarkdown(runs, o);
     // p = 2 and f0 = 6.9 exactly; the depth, the same at every spacing, is its own estimate.
     EXPECT_NE(md.find("| bumper hole diameter | 2.00 | 6.900 mm |  |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| penetration depth | – | 1.000 mm | the same value at the three finest "
+                      "spacings |"),
+              std::string::npos)
+        << md;
     // 0.02 mm: hole 6.884 mm, 2.7 % above the measured 6.7 mm, 0.2 % below the estimate.
     EXPECT_NE(md.find("| 0.02 | 2500 | 0 | 100 | 125 | 6.88 | 2.7 % | 0.2 % | 1.00 | 0.0 % | NP |"),
               std::string::npos)
@@ -84,6 +88,12 @@ TEST(ConvergenceReport, OrderEstimateAndErrorsOfAnExactLadder) {
 
 TEST(ConvergenceReport, OnlyTheStudysOwnCaseGetsItsTableAndMeasurement) {
     EXPECT_TRUE(validation::sourceStudyTable("A1076").empty());
+    EXPECT_TRUE(validation::sourceStudyPoints("A1076").empty());
+    // The study's two timed runs: 0.02 mm, 11 %, a day; 0.015 mm, 3 %, 36 h.
+    const auto points = validation::sourceStudyPoints("UM-3.125");
+    ASSERT_EQ(points.size(), 2u);
+    EXPECT_EQ(points[0], std::make_pair(86400.0, 11.0));
+    EXPECT_EQ(points[1], std::make_pair(129600.0, 3.0));
     EXPECT_FALSE(validation::measuredBumperHoleMm("A1076"));
     EXPECT_FALSE(validation::measuredBumperHoleMm("no such case"));
 }
