@@ -1,5 +1,6 @@
 # make validate: the verdicts of the validation cases against the tests (docs/validation.md).
 ROOT := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
+VALIDATE_MK := $(abspath $(lastword $(MAKEFILE_LIST)))
 BIN ?= $(ROOT)/build/tools
 SET ?= quick
 RESOLUTION ?= 0.04
@@ -69,9 +70,18 @@ slurm-validate:
 validate-forget:
 	rm -f $(foreach c,$(CASES),$(ARCHIVE)/$(c).json)
 
+ifeq ($(CASE_CHAIN),)
+# One job per case: a sub-make of the case's whole chain (kept verdict, or inputs -> scene ->
+# run -> verdict). A single make with -j queues every runnable job of the tree in order, so
+# every case's run would go before the first verdict and a validation stopped part-way would
+# have none. A verdict that exists stands (as a kept one does); delete it to redo the case.
+$(foreach c,$(CASES),$(OUT)/$(c)/verdict.json): $(OUT)/%/verdict.json:
+	@$(MAKE) --no-print-directory -f $(VALIDATE_MK) CASE_CHAIN=1 $@
+else
 # Before the run rules: a kept verdict, where there is one, is taken instead of a run.
 $(OUT)/%/verdict.json: $(ARCHIVE)/%.json
 	@mkdir -p $(@D); cp -p $< $@
+endif
 
 $(OUT)/%/panel.json:
 	$(HVI_VALIDATE) inputs $* --out-dir $(OUT)/$* -q
