@@ -5,6 +5,7 @@
 #include "validation/CaseInputs.hpp"
 #include "validation/ConvergenceReport.hpp"
 #include "validation/Progress.hpp"
+#include "validation/StressSuite.hpp"
 #include "validation/ValidationReport.hpp"
 
 #include <filesystem>
@@ -21,9 +22,9 @@ HviValidateTool::HviValidateTool()
                                  "the verdicts against the tests") {}
 
 void HviValidateTool::addOptions(CLI::App& app) {
-    app.add_option("action", m_action, "list | inputs | report | progress | convergence")
+    app.add_option("action", m_action, "list | inputs | report | progress | convergence | extreme")
         ->required()
-        ->check(CLI::IsMember({"list", "inputs", "report", "progress", "convergence"}));
+        ->check(CLI::IsMember({"list", "inputs", "report", "progress", "convergence", "extreme"}));
     app.add_option("case", m_case, "Case id (inputs)");
     app.add_option("--set", m_set,
                    "Cases: all (default), source_study, development, or quick (the bracketing "
@@ -84,6 +85,19 @@ void HviValidateTool::convergence() const {
 void HviValidateTool::execute() {
     if (m_action == "convergence") {
         convergence();
+        return;
+    }
+    if (m_action == "extreme") { // the stiff and extreme suite's table
+        if (m_outDir.empty()) {
+            throw InputError("<flags>", "/out_dir", "extreme needs --out-dir",
+                             "the suite's directory (<case>/run.h5 in it)");
+        }
+        const std::string text = validation::stressReport(validation::readStressRuns(m_outDir));
+        if (m_output == "-") {
+            std::cout << text;
+        } else {
+            io::writeTextAtomically(m_output, text);
+        }
         return;
     }
     std::vector<validation::Case> cases;

@@ -13,7 +13,9 @@
 //   hvi-validate convergence [CASE] --out-dir DIR -o FILE.md [--csv FILE] [--plot FILE.png]
 //                [--measured-hole-mm D] [--setup TEXT]
 //       the spacing ladder of DIR/s<spacing>/verdict.json (make convergence): error against
-//       run time, observed order, Richardson estimate (validation/ConvergenceReport.hpp).
+//       run time, observed order, Richardson estimate (validation/ConvergenceReport.hpp);
+//   hvi-validate extreme --out-dir DIR -o FILE.md
+//       the stiff and extreme suite's table from DIR/<case>/run.h5 (validation/StressSuite.hpp).
 // Bad input (an unknown action, case or set) is one line naming it, exit 2, nothing written.
 #pragma once
 

@@ -407,6 +407,21 @@ OutputSchedule scheduleOf(const io::CheckpointState& state, const std::filesyste
     return o;
 }
 
+/// What set the last time step: the package, and for SPH the particle (its body and place).
+std::string limiterOf(const Simulation& sim) {
+    const int32_t lim = sim.dtLimitingParticle();
+    std::string limiter = sim.dtLimiter();
+    if (limiter == "sph" && lim >= 0) {
+        const auto& ps = sim.particles();
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "sph: %s #%d (z %.3f r %.3f mm)",
+                      sim.scene().bodies[static_cast<std::size_t>(ps.body[lim])].name.c_str(), lim,
+                      ps.z[lim], ps.r[lim]);
+        limiter = buf;
+    }
+    return limiter;
+}
+
 } // namespace
 
 RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
@@ -424,6 +439,9 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     auto checkpointNow = [&]() {
         io::CheckpointState state = checkpointOf(sim, summary.maxEnergyError);
         state.extra["scene_fingerprint"] = fingerprint;
+        state.extra["min_dt"] = {{"dt_us", summary.minDtUs},
+                                 {"time_us", summary.minDtTimeUs},
+                                 {"limiter", summary.minDtLimiter}};
         state.extra["schedule"] = {{"snapshots", schedule.snapshots},
                                    {"history_rows", schedule.historyRows},
                                    {"next_snapshot_us", schedule.nextSnapshotUs}};
@@ -446,6 +464,11 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         }
         restoreCheckpoint(sim, state);
         summary.maxEnergyError = state.extra.value("max_energy_error", 0.0);
+        if (state.extra.contains("min_dt")) {
+            summary.minDtUs = state.extra["min_dt"]["dt_us"].get<double>();
+            summary.minDtTimeUs = state.extra["min_dt"]["time_us"].get<double>();
+            summary.minDtLimiter = state.extra["min_dt"]["limiter"].get<std::string>();
+        }
         summary.resumed = true;
         // Carry the snapshots and history of the interrupted run into the new file: its run
         // file (stopped by a signal), or the temporary it left when it was killed outright.
@@ -498,6 +521,11 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
             break;
         }
         sim.advance();
+        if (sim.lastDt() < summary.minDtUs) { // the smallest step, and what set it
+            summary.minDtUs = sim.lastDt();
+            summary.minDtTimeUs = sim.time();
+            summary.minDtLimiter = limiterOf(sim);
+        }
         summary.particleSteps += static_cast<double>(sim.aliveCount());
         summary.activeParticleSteps += static_cast<double>(sim.activeCount());
         if (const fe::FeSolid* fe = sim.finiteElements()) {
@@ -518,16 +546,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
             const double rate = (sim.time() - startTime) / std::max(wall, 1e-9);
             const double eta = rate > 0 ? (scene.run.endTime - sim.time()) / rate : NAN;
             char line[512];
-            const int32_t lim = sim.dtLimitingParticle();
-            std::string limiter = sim.dtLimiter();
-            if (sim.dtLimiter() == "sph" && lim >= 0) {
-                const auto& ps = sim.particles();
-                char buf[128];
-                std::snprintf(buf, sizeof buf, "%s #%d (z %.3f r %.3f mm)",
-                              scene.bodies[static_cast<std::size_t>(ps.body[lim])].name.c_str(),
-                              lim, ps.z[lim], ps.r[lim]);
-                limiter = buf;
-            }
+            const std::string limiter = limiterOf(sim);
             std::string elements;
             if (const fe::FeSolid* fe = sim.finiteElements()) {
                 elements = "  elements " + std::to_string(fe->evaluatedCount()) + " active/" +
@@ -577,6 +596,10 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         {"max_abs_energy_error", summary.maxEnergyError},
         {"particle_spacing_mm", scene.sph.particleSpacing},
         {"resumed", summary.resumed},
+        {"min_dt_us", std::isfinite(summary.minDtUs) ? nlohmann::json(summary.minDtUs)
+                                                     : nlohmann::json(nullptr)},
+        {"min_dt_time_us", summary.minDtTimeUs},
+        {"min_dt_limiter", summary.minDtLimiter},
         {"particle_steps_per_s", summary.particleSteps / std::max(summary.wallSeconds, 1e-9)}};
     if (reason) {
         summary.stopReason = *reason;

@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -36,6 +37,10 @@ struct RunSummary {
     double particleSteps = 0.0;  ///< sum over steps of alive particles
     double activeParticleSteps = 0.0;
     double elementSteps = 0.0; ///< sum over steps of FE elements evaluated
+    /// The smallest time step [us], when it was taken [us] and what set it.
+    double minDtUs = std::numeric_limits<double>::infinity();
+    double minDtTimeUs = 0.0;
+    std::string minDtLimiter;
     std::size_t particles = 0;
     bool resumed = false;
 };
