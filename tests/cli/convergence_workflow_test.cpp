@@ -15,15 +15,6 @@
 using namespace hvi::test;
 namespace fs = std::filesystem;
 
-namespace {
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-} // namespace
-
 TEST(ConvergenceWorkflow, CoarseLadderOfTheBumperCase) {
     const fs::path out = tempPath("convergence");
     fs::remove_all(out);
@@ -33,8 +24,8 @@ TEST(ConvergenceWorkflow, CoarseLadderOfTheBumperCase) {
                              " OUT=" + out.string();
     const fs::path log = out.string() + ".log";
     ASSERT_EQ(std::system((make + " -j2 convergence >" + log.string() + " 2>&1").c_str()), 0)
-        << readAll(log);
-    const std::string md = readAll(out / "convergence.md");
+        << readFileText(log);
+    const std::string md = readFileText(out / "convergence.md");
     EXPECT_NE(md.find("Case `UM-3.125`: to 0.5 µs with --domain-radius-mm 10"), std::string::npos)
         << md;
     for (const char* row : {"| 0.2 |", "| 0.16 |", "| 0.12 |"}) {
@@ -44,7 +35,7 @@ TEST(ConvergenceWorkflow, CoarseLadderOfTheBumperCase) {
     EXPECT_NE(md.find("![Error against wall time, log-log](convergence.png)"), std::string::npos)
         << md;
     EXPECT_TRUE(fs::exists(out / "convergence.png"));
-    const std::string csv = readAll(out / "convergence.csv");
+    const std::string csv = readFileText(out / "convergence.csv");
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4) << csv;
     EXPECT_EQ(std::system((make + " -q -f convergence.mk " + (out / "convergence.md").string() +
                            " >/dev/null 2>&1")

@@ -17,13 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::string makeDesign(const fs::path& out, const std::string& vars,
                        const std::string& target = "design") {
     return "make -s -C " + sourcePath("workflows").string() + " " + target + " RESOLUTION=0.1 " +
@@ -39,7 +32,7 @@ TEST(DesignWorkflow, DefaultCaseRunsEveryStepAndSaysTheTestsResult) {
     fs::remove_all(out);
     const fs::path log = out.string() + ".log";
     ASSERT_EQ(std::system((makeDesign(out, "") + " >" + log.string() + " 2>&1").c_str()), 0)
-        << readAll(log);
+        << readFileText(log);
     const fs::path dir = out / "default";
     for (const char* file : {"sizing.json", "ballistic_limit.svg", "scene.json", "run.h5",
                              "verdict.json", "pictures", "run.xmf", "run.msh"}) {
@@ -49,10 +42,10 @@ TEST(DesignWorkflow, DefaultCaseRunsEveryStepAndSaysTheTestsResult) {
         EXPECT_EQ(entry.path().filename().string().find(".part."), std::string::npos)
             << "a run's temporary name left behind: " << entry.path();
     }
-    EXPECT_EQ(readAll(dir / "writer"), "foam2layers\n");
+    EXPECT_EQ(readFileText(dir / "writer"), "foam2layers\n");
     const auto verdict = hvi::io::readJsonFile((dir / "verdict.json").string());
     EXPECT_TRUE(verdict["verdict"].is_string());
-    const std::string text = readAll(log);
+    const std::string text = readFileText(log);
     EXPECT_NE(text.find("HITF03147-2"), std::string::npos) << "the test's result: " << text;
     EXPECT_NE(text.find("design: outputs in " + dir.string()), std::string::npos) << text;
     // Nothing left to do (design itself is phony: always out of date to make -q).
@@ -74,7 +67,7 @@ TEST(DesignWorkflow, BadConstraintsStopTheChainWithNoTargetBehind) {
         (makeDesign(out, "CONSTRAINTS=" + constraints.string()) + " >" + log.string() + " 2>&1")
             .c_str());
     EXPECT_NE(rc, 0);
-    const std::string text = readAll(log);
+    const std::string text = readFileText(log);
     EXPECT_NE(text.find("/threat/diameter_mm"), std::string::npos) << text;
     EXPECT_FALSE(fs::exists(out / "design_bad_shield" / "sizing.json"));
     EXPECT_FALSE(fs::exists(out / "design_bad_shield" / "scene.json"));

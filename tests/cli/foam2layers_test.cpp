@@ -327,8 +327,8 @@ TEST(Foam2LayersCli, WritesASingleWallScene) {
     EXPECT_EQ(wall[0]["name"], "wall");
     EXPECT_EQ(wall[0]["material"], "Al2024-T3");
     EXPECT_EQ(wall[0]["shape"]["z_front_mm"].get<double>(), 0.0);
-    EXPECT_TRUE(near("wall thickness", wall[0]["shape"]["thickness_mm"].get<double>(), 2.5,
-                     1e-12, 0.0));
+    EXPECT_TRUE(
+        near("wall thickness", wall[0]["shape"]["thickness_mm"].get<double>(), 2.5, 1e-12, 0.0));
     EXPECT_EQ(scene["summary"]["shield"], "single_wall");
     // The domain rule's floor (5 d) and the end-time rule with L = spacing + wall.
     EXPECT_EQ(scene["domain"]["radius_mm"].get<double>(), 5.0);

@@ -3,6 +3,7 @@
 // throughput.
 #include "RunTool.hpp"
 #include "io/AtomicOutput.hpp"
+#include "io/Checkpoint.hpp"
 #include "io/RunFileReader.hpp"
 
 #include <cmath>
@@ -51,6 +52,18 @@ std::filesystem::path uninterruptedRun() {
         return path;
     }();
     return run;
+}
+
+/// A shell command: hvi-run on `scene` into `run` in the background, checkpointing every
+/// 0.3 s; once its first checkpoint exists (at most 60 s), `kill -SIGNAL` it and wait.
+std::string signalAfterFirstCheckpoint(const std::filesystem::path& scene,
+                                       const std::filesystem::path& run,
+                                       const std::string& signal) {
+    const auto checkpoint = hvi::io::checkpointPathFor(run);
+    return toolPath("hvi-run").string() + " " + scene.string() + " -o " + run.string() +
+           " --threads 1 -q --checkpoint-every-s 0.3 & p=$!; i=0; while [ ! -f " +
+           checkpoint.string() + " ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i+1)); done; " +
+           "kill -" + signal + " $p; wait $p";
 }
 
 /// h5diff's verdict on the snapshots and the history of two run files ("" when identical;
@@ -146,11 +159,7 @@ TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
     std::filesystem::remove(run);
     std::filesystem::remove(checkpoint);
     // Start it, wait for its first checkpoint (0.3 s of wall time in), then kill -9.
-    const std::string script =
-        toolPath("hvi-run").string() + " " + scene.string() + " -o " + run.string() +
-        " --threads 1 -q --checkpoint-every-s 0.3 & p=$!; i=0; while [ ! -f " +
-        checkpoint.string() + " ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i+1)); done; " +
-        "kill -9 $p; wait $p; exit 0";
+    const std::string script = signalAfterFirstCheckpoint(scene, run, "9") + "; exit 0";
     ASSERT_EQ(std::system(script.c_str()), 0);
     ASSERT_TRUE(std::filesystem::exists(checkpoint)) << "no checkpoint within 60 s";
     if (std::filesystem::exists(run)) {
@@ -197,11 +206,7 @@ TEST(HviRunCli, AStoppedAndResumedRunIsTheUninterruptedOne) {
         std::filesystem::remove(checkpoint);
         // Stop it once its first periodic checkpoint exists (0.3 s of wall time in), so the
         // stop falls between scheduled snapshots, after some history.
-        const std::string script =
-            toolPath("hvi-run").string() + " " + scene.string() + " -o " + run.string() +
-            " --threads 1 -q --checkpoint-every-s 0.3 & p=$!; i=0; while [ ! -f " +
-            checkpoint.string() + " ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i+1)); done; " +
-            "kill -" + signal + " $p; wait $p; exit $?";
+        const std::string script = signalAfterFirstCheckpoint(scene, run, signal) + "; exit $?";
         const int status = std::system(script.c_str());
         ASSERT_TRUE(WIFEXITED(status));
         if (WEXITSTATUS(status) == 0) {

@@ -18,13 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readText(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 int countLines(const fs::path& path) {
     std::ifstream in(path);
     int n = 0;
@@ -118,8 +111,8 @@ TEST(HviSweepWorkflow, BracketsTheStandInLimitAndResumes) {
     fs::remove_all(root);
     const fs::path bin = standInBin(root / "bin");
     const fs::path out = root / "out";
-    ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readText(out.string() + ".log");
-    const std::string csv = readText(out / "sweep.csv");
+    ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readFileText(out.string() + ".log");
+    const std::string csv = readFileText(out / "sweep.csv");
     EXPECT_TRUE(fs::exists(out / "sweep.svg"));
     for (const double v : {6.0, 7.0}) {
         const auto c = hvi::io::readJsonFile(
@@ -147,7 +140,7 @@ TEST(HviSweepWorkflow, BracketsTheStandInLimitAndResumes) {
     fs::remove(out / "v7" / "critical.json");
     fs::remove(out / "v7" / "points" / last / "verdict.json");
     fs::remove(out / "v7" / "points" / last / "run.h5");
-    ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readText(out.string() + ".log");
+    ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readFileText(out.string() + ".log");
     EXPECT_EQ(countLines(bin / "runs.log"), runsBefore + 1);
     EXPECT_EQ(hvi::io::readJsonFile((out / "v7" / "critical.json").string()), c7);
 }

@@ -25,13 +25,6 @@ int lineCount(const std::string& text) {
     return n;
 }
 
-std::string readText(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 } // namespace
 
 TEST(HviValidateCli, ListsEveryCaseOfEachSet) {
@@ -49,7 +42,7 @@ TEST(HviValidateCli, InputsAreAcceptedByTheTools) {
         fs::remove_all(dir);
         const auto r = runTool("hvi-validate", "inputs " + id + " --out-dir " + dir.string());
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        std::string writer = readText(dir / "writer");
+        std::string writer = readFileText(dir / "writer");
         writer.pop_back();
         const auto scene =
             runTool(writer, (dir / "panel.json").string() + " --particle-spacing-mm 0.05 -o " +
@@ -81,14 +74,14 @@ TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
                                 " validate SET=ci RESOLUTION=0.1 THREADS=1 BIN=" +
                                 toolPath("hvi-run").parent_path().parent_path().string() +
                                 " OUT=" + out.string() + " >" + (out.string() + ".log") + " 2>&1";
-    ASSERT_EQ(std::system(command.c_str()), 0) << readText(out.string() + ".log");
-    const std::string report = readText(out / "validation.md");
+    ASSERT_EQ(std::system(command.c_str()), 0) << readFileText(out.string() + ".log");
+    const std::string report = readFileText(out / "validation.md");
     for (const char* id : {"| HITF03147-2 | foam |", "| A1076 | whipple |"}) {
         EXPECT_NE(report.find(id), std::string::npos) << report;
     }
     EXPECT_NE(report.find("Not run: 0 of 2"), std::string::npos) << report;
     // A progress line after each case (issue #22, item 5), the last one saying all are done.
-    const std::string log = readText(out.string() + ".log");
+    const std::string log = readFileText(out.string() + ".log");
     EXPECT_NE(log.find("validate: 1/2 cases done, 1 left, about "), std::string::npos) << log;
     EXPECT_NE(log.find("validate: all 2 cases done"), std::string::npos) << log;
     for (const char* id : {"HITF03147-2", "A1076"}) {
@@ -112,18 +105,18 @@ TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
                              toolPath("hvi-run").parent_path().parent_path().string() +
                              " OUT=" + out.string() + " ARCHIVE=" + archive.string();
     ASSERT_EQ(std::system((make + " validate-keep >" + out.string() + ".keep.log 2>&1").c_str()), 0)
-        << readText(out.string() + ".keep.log");
-    EXPECT_NE(readText(out.string() + ".keep.log").find("validate-keep: 2 new verdicts"),
+        << readFileText(out.string() + ".keep.log");
+    EXPECT_NE(readFileText(out.string() + ".keep.log").find("validate-keep: 2 new verdicts"),
               std::string::npos)
-        << readText(out.string() + ".keep.log");
-    const std::string kept = readText(archive / "A1076.json");
-    EXPECT_EQ(kept, readText(out / "A1076" / "verdict.json"));
+        << readFileText(out.string() + ".keep.log");
+    const std::string kept = readFileText(archive / "A1076.json");
+    EXPECT_EQ(kept, readFileText(out / "A1076" / "verdict.json"));
     fs::remove(out / "A1076" / "run.h5");
     fs::remove(out / "A1076" / "verdict.json");
     fs::remove(out / "validation.md");
     ASSERT_EQ(std::system((make + " validate >" + out.string() + ".again.log 2>&1").c_str()), 0)
-        << readText(out.string() + ".again.log");
+        << readFileText(out.string() + ".again.log");
     EXPECT_FALSE(fs::exists(out / "A1076" / "run.h5")) << "the kept verdict was run again";
-    EXPECT_EQ(readText(out / "A1076" / "verdict.json"), kept);
-    EXPECT_NE(readText(out / "validation.md").find("Not run: 0 of 2"), std::string::npos);
+    EXPECT_EQ(readFileText(out / "A1076" / "verdict.json"), kept);
+    EXPECT_NE(readFileText(out / "validation.md").find("Not run: 0 of 2"), std::string::npos);
 }

@@ -4,14 +4,13 @@
 
 #include "TestPaths.hpp"
 
-#include <unistd.h>
-
 #include <array>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace hvi::test {
 
@@ -27,8 +26,8 @@ inline ToolResult runTool(const std::string& tool, const std::string& args,
     const auto tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
     const auto outPath = tempPath("run-" + tag + ".out");
     const auto errPath = tempPath("run-" + tag + ".err");
-    std::string command = toolPath(tool).string() + " " + args + " >" + outPath.string() + " 2>" +
-                          errPath.string();
+    std::string command =
+        toolPath(tool).string() + " " + args + " >" + outPath.string() + " 2>" + errPath.string();
     if (!stdinText.empty()) {
         const auto inPath = tempPath("run-" + tag + ".in");
         std::ofstream(inPath) << stdinText;
@@ -50,6 +49,14 @@ inline ToolResult runTool(const std::string& tool, const std::string& args,
     std::filesystem::remove(outPath);
     std::filesystem::remove(errPath);
     return result;
+}
+
+/// The whole text of a file ("" when it cannot be read).
+inline std::string readFileText(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
 }
 
 /// Writes `text` to a fresh temporary file and returns its path.
