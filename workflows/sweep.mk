@@ -10,6 +10,7 @@
 #   make -C workflows sweep CASE=WPL-0341 PARAMETER=rear_wall SPEEDS="5.5 6.5 7.5" \
 #        [RESOLUTION=0.08] [TOLERANCE_MM=0.25] [THREADS=1] [OUT=dir] [LAUNCH='srun -n1 -c8']
 #   make -C workflows sweep PANEL=panel.json WRITER=foam2layers [CONSTRAINTS=c.json] ...
+#   make -C workflows -f sweep.mk sweep-keep CASE=... (the same settings): keep the results
 ROOT := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
 SWEEP_MK := $(abspath $(lastword $(MAKEFILE_LIST)))
 BIN ?= $(ROOT)/build/tools
@@ -36,7 +37,14 @@ ifeq ($(strip $(CASE)$(PANEL)),)
 $(error give the shield: CASE=<validation id> or PANEL=<scene writer input> WRITER=<writer>)
 endif
 
-.PHONY: sweep slurm-sweep
+# Kept results (as validate.mk's kept verdicts): `make sweep-keep` copies each finished speed's
+# sweep.json and critical.json into KEPT (committed to the repository); a speed kept there is
+# taken instead of its search, so a sweep spans sessions and its picture regenerates without
+# the runs. Kept results hold for the solver and settings that made them: after a change to
+# the physics or to TOLERANCE_MM, remove KEPT's speeds and run again.
+KEPT ?= $(ROOT)/data/validation/sweeps/$(notdir $(OUT))
+
+.PHONY: sweep slurm-sweep sweep-keep
 .DELETE_ON_ERROR:
 # Keep each point's scene and run file (not .SECONDARY for everything: that would make the
 # per-speed results intermediate, and a removed one would not be remade).
@@ -53,14 +61,22 @@ $(OUT)/sweep.csv: $(CRITICAL_FILES)
 	$(HVI_SWEEP) report --out-dir $(OUT) -o $@ --plot $(OUT)/sweep.svg
 	@echo "sweep: $(words $(SPEEDS)) speeds -> $@, $(OUT)/sweep.svg"
 
+sweep-keep:
+	@n=0; for v in $(SPEEDS); do if [ -f $(OUT)/v$$v/critical.json ]; then \
+	  mkdir -p $(KEPT)/v$$v; cp -p $(OUT)/v$$v/sweep.json $(OUT)/v$$v/critical.json $(KEPT)/v$$v/; \
+	  n=$$((n+1)); fi; done; echo "sweep-keep: $$n speeds -> $(KEPT)"
+
 $(SPEC_FILES): $(OUT)/v%/sweep.json:
-	$(HVI_SWEEP) init $(SHIELD_FLAGS) --parameter $(PARAMETER) --speed-km-s $* \
-	  --tolerance-mm $(TOLERANCE_MM) --out-dir $(OUT)/v$*
+	@if [ -f $(KEPT)/v$*/sweep.json ]; then mkdir -p $(@D); cp -p $(KEPT)/v$*/sweep.json $@; \
+	  else $(HVI_SWEEP) init $(SHIELD_FLAGS) --parameter $(PARAMETER) --speed-km-s $* \
+	  --tolerance-mm $(TOLERANCE_MM) --out-dir $(OUT)/v$*; fi
 
 # One point at a time: hvi-sweep names the next one from the verdicts so far (and writes
 # critical.json when the search stops), a sub-make runs it through run-rules.mk.
 $(CRITICAL_FILES): $(OUT)/v%/critical.json: $(OUT)/v%/sweep.json
-	@set -e; while p=$$($(HVI_SWEEP) next $(OUT)/v$*); [ -n "$$p" ]; do \
+	@set -e; if [ -f $(KEPT)/v$*/critical.json ]; then cp -p $(KEPT)/v$*/critical.json $@; \
+	  echo "sweep: v$*: kept in $(KEPT)"; exit 0; fi; \
+	while p=$$($(HVI_SWEEP) next $(OUT)/v$*); [ -n "$$p" ]; do \
 	  $(MAKE) --no-print-directory -f $(SWEEP_MK) $$p/verdict.json; \
 	  echo "sweep: v$*: $$(basename $$p) $$(grep -m1 '"verdict"' $$p/verdict.json | tr -d ' ,')"; \
 	done

@@ -55,11 +55,13 @@ fs::path standInBin(const fs::path& dir) {
     return dir;
 }
 
-int runMake(const fs::path& bin, const fs::path& out, const std::string& speeds) {
-    const std::string command = "make -s -C " + sourcePath("workflows").string() +
-                                " -f sweep.mk sweep CASE=WPL-0341 PARAMETER=rear_wall SPEEDS='" +
-                                speeds + "' TOLERANCE_MM=0.2 RESOLUTION=0.2 BIN=" + bin.string() +
-                                " OUT=" + out.string() + " >>" + out.string() + ".log 2>&1";
+int runMake(const fs::path& bin, const fs::path& out, const std::string& speeds,
+            const std::string& goal = "sweep") {
+    const std::string command = "make -s -C " + sourcePath("workflows").string() + " -f sweep.mk " +
+                                goal + " CASE=WPL-0341 PARAMETER=rear_wall SPEEDS='" + speeds +
+                                "' TOLERANCE_MM=0.2 RESOLUTION=0.2 BIN=" + bin.string() +
+                                " OUT=" + out.string() + " KEPT=" + (out.string() + ".kept") +
+                                " >>" + out.string() + ".log 2>&1";
     return std::system(command.c_str());
 }
 
@@ -143,4 +145,15 @@ TEST(HviSweepWorkflow, BracketsTheStandInLimitAndResumes) {
     ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readFileText(out.string() + ".log");
     EXPECT_EQ(countLines(bin / "runs.log"), runsBefore + 1);
     EXPECT_EQ(hvi::io::readJsonFile((out / "v7" / "critical.json").string()), c7);
+
+    // Kept results stand for their searches: kept, the whole output removed, the next make
+    // runs nothing and draws the same CSV.
+    fs::remove_all(out.string() + ".kept");
+    ASSERT_EQ(runMake(bin, out, "6 7", "sweep-keep"), 0) << readFileText(out.string() + ".log");
+    EXPECT_TRUE(fs::exists(out.string() + ".kept/v7/critical.json"));
+    fs::remove_all(out);
+    const int runsKept = countLines(bin / "runs.log");
+    ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readFileText(out.string() + ".log");
+    EXPECT_EQ(countLines(bin / "runs.log"), runsKept) << "a kept speed was searched again";
+    EXPECT_EQ(readFileText(out / "sweep.csv"), csv);
 }
