@@ -63,7 +63,8 @@ $(OUT)/sweep.csv: $(CRITICAL_FILES)
 
 sweep-keep:
 	@n=0; for v in $(SPEEDS); do if [ -f $(OUT)/v$$v/critical.json ]; then \
-	  mkdir -p $(KEPT)/v$$v; cp -p $(OUT)/v$$v/sweep.json $(OUT)/v$$v/critical.json $(KEPT)/v$$v/; \
+	  mkdir -p $(KEPT)/v$$v; for f in sweep.json critical.json; do \
+	    sed 's|$(ROOT)/||g' $(OUT)/v$$v/$$f > $(KEPT)/v$$v/$$f; done; \
 	  n=$$((n+1)); fi; done; echo "sweep-keep: $$n speeds -> $(KEPT)"
 
 $(SPEC_FILES): $(OUT)/v%/sweep.json:

@@ -54,10 +54,13 @@ $(REPORT): $(foreach c,$(CASES),$(OUT)/$(c)/verdict.json $(OUT)/$(c)/ble.json)
 	$(HVI_VALIDATE) report --set $(SET) --out-dir $(OUT) --resolution-mm $(RESOLUTION) -o $@
 	@echo "validate: $(words $(CASES)) cases -> $@"
 
+# Kept with the paths inside them relative to the repository (no machine's path in the files).
 validate-keep:
 	@mkdir -p $(ARCHIVE); n=0; for c in $(CASES); do \
-	  if [ -f $(OUT)/$$c/verdict.json ] && ! cmp -s $(OUT)/$$c/verdict.json $(ARCHIVE)/$$c.json; \
-	  then cp -p $(OUT)/$$c/verdict.json $(ARCHIVE)/$$c.json; n=$$((n+1)); fi; done; \
+	  v=$(OUT)/$$c/verdict.json; [ -f $$v ] || continue; \
+	  sed 's|$(ROOT)/||g' $$v > $(ARCHIVE)/$$c.json.tmp; touch -r $$v $(ARCHIVE)/$$c.json.tmp; \
+	  if cmp -s $(ARCHIVE)/$$c.json.tmp $(ARCHIVE)/$$c.json; then rm $(ARCHIVE)/$$c.json.tmp; \
+	  else mv $(ARCHIVE)/$$c.json.tmp $(ARCHIVE)/$$c.json; n=$$((n+1)); fi; done; \
 	echo "validate-keep: $$n new verdicts -> $(ARCHIVE)"
 
 # The cases as a Slurm job array (slurm.mk), the report by the collect job.

@@ -363,23 +363,21 @@ void carryOver(const std::filesystem::path& previousFile, const OutputSchedule& 
     }
     const io::HistoryColumns h = previous.readHistory();
     for (std::size_t k = 0; k < std::min(schedule.historyRows, h.timeUs.size()); ++k) {
-        {
-            io::HistoryRow row;
-            row.timeUs = h.timeUs[k];
-            row.dtUs = h.dtUs[k];
-            row.step = h.step[k];
-            row.kineticEnergy = h.kineticEnergy[k];
-            row.internalEnergy = h.internalEnergy[k];
-            row.totalEnergy = h.totalEnergy[k];
-            row.energyError = h.energyError[k];
-            row.deletedEnergy = h.deletedEnergy[k];
-            row.mass = h.mass[k];
-            row.momentumZ = h.momentumZ[k];
-            row.aliveCount = h.aliveCount[k];
-            row.deletedCount = h.deletedCount[k];
-            row.activeCount = h.activeCount[k];
-            writer.appendHistory(row);
-        }
+        io::HistoryRow row;
+        row.timeUs = h.timeUs[k];
+        row.dtUs = h.dtUs[k];
+        row.step = h.step[k];
+        row.kineticEnergy = h.kineticEnergy[k];
+        row.internalEnergy = h.internalEnergy[k];
+        row.totalEnergy = h.totalEnergy[k];
+        row.energyError = h.energyError[k];
+        row.deletedEnergy = h.deletedEnergy[k];
+        row.mass = h.mass[k];
+        row.momentumZ = h.momentumZ[k];
+        row.aliveCount = h.aliveCount[k];
+        row.deletedCount = h.deletedCount[k];
+        row.activeCount = h.activeCount[k];
+        writer.appendHistory(row);
     }
 }
 
@@ -439,9 +437,11 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     auto checkpointNow = [&]() {
         io::CheckpointState state = checkpointOf(sim, summary.maxEnergyError);
         state.extra["scene_fingerprint"] = fingerprint;
-        state.extra["min_dt"] = {{"dt_us", summary.minDtUs},
-                                 {"time_us", summary.minDtTimeUs},
-                                 {"limiter", summary.minDtLimiter}};
+        if (std::isfinite(summary.minDtUs)) { // none before the first step
+            state.extra["min_dt"] = {{"dt_us", summary.minDtUs},
+                                     {"time_us", summary.minDtTimeUs},
+                                     {"limiter", summary.minDtLimiter}};
+        }
         state.extra["schedule"] = {{"snapshots", schedule.snapshots},
                                    {"history_rows", schedule.historyRows},
                                    {"next_snapshot_us", schedule.nextSnapshotUs}};
