@@ -44,9 +44,10 @@ ARCHIVE ?= $(ROOT)/data/validation/verdicts/$(RESOLUTION)
 
 validate: $(REPORT)
 
-# The equations' verdicts alone (seconds for every case); the hydrocode columns of cases not
-# run yet say so.
-validate-ble: $(foreach c,$(CASES),$(OUT)/$(c)/ble.json)
+# The report without running anything (seconds for every case): the equations' verdicts,
+# the kept ones of the hydrocode (ARCHIVE, below), and "not run" for the rest.
+KEPT_VERDICTS = $(foreach c,$(CASES),$(if $(wildcard $(ARCHIVE)/$(c).json),$(OUT)/$(c)/verdict.json))
+validate-ble: $(foreach c,$(CASES),$(OUT)/$(c)/ble.json) $(KEPT_VERDICTS)
 	$(HVI_VALIDATE) report --set $(SET) --out-dir $(OUT) --resolution-mm $(RESOLUTION) -o $(REPORT)
 	@echo "validate-ble: $(words $(CASES)) cases -> $(REPORT)"
 

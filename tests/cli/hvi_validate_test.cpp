@@ -126,4 +126,11 @@ TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
     EXPECT_FALSE(fs::exists(out / "A1076" / "run.h5")) << "the kept verdict was run again";
     EXPECT_EQ(readFileText(out / "A1076" / "verdict.json"), kept);
     EXPECT_NE(readFileText(out / "validation.md").find("Not run: 0 of 2"), std::string::npos);
+
+    // A fresh checkout's report from the kept verdicts alone, with nothing run.
+    fs::remove_all(out);
+    ASSERT_EQ(std::system((make + " validate-ble >" + out.string() + ".ble.log 2>&1").c_str()), 0)
+        << readFileText(out.string() + ".ble.log");
+    EXPECT_NE(readFileText(out / "validation.md").find("Not run: 0 of 2"), std::string::npos);
+    EXPECT_FALSE(fs::exists(out / "A1076" / "scene.json"));
 }
