@@ -230,7 +230,10 @@ Scene parseScene(const json& document, const std::string& file,
             issues.push_back({file, ptr + "/shape", "empty rectangle",
                               "z_max_mm > z_min_mm and r_max_mm > r_min_mm"});
         }
-        if (b.shape.kind != ShapeKind::Sphere &&
+        // An SPH body needs two rows of points; an FE body is meshed with at least one element
+        // through any thickness (geometry::GmshMesher::divisions rounds up), so a foam layer
+        // thinner than the spacing is a thin mesh, not an unresolved body.
+        if (b.discretization == Discretization::Sph && b.shape.kind != ShapeKind::Sphere &&
             b.spacing * 2.0 > b.shape.boundZMax() - b.shape.boundZMin()) {
             issues.push_back({file, ptr + "/shape",
                               "thinner than two particle spacings (" + std::to_string(b.spacing) +

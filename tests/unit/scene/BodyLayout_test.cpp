@@ -3,6 +3,7 @@
 #include "AssessScenes.hpp"
 #include "SceneRun.hpp"
 #include "scene/BodyLayout.hpp"
+#include "solver/Simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -72,6 +73,20 @@ TEST(BodyLayout, AProjectileInsideItsBumperIsRefused) {
     const std::string inside = refusal(twoBodies(0.25));
     EXPECT_EQ(inside.rfind("/bodies/1/shape: overlaps body 'projectile' (/bodies/0) by ", 0), 0u)
         << inside;
+}
+
+TEST(BodyLayout, AThinSphPlateIsRefusedAThinFeLayerIsMeshed) {
+    auto thin = twoBodies(-0.55);
+    thin["bodies"][1]["shape"]["thickness_mm"] = 0.15; // 1.5 spacings
+    EXPECT_EQ(refusal(thin), "/bodies/1/shape: thinner than two particle spacings (0.100000 mm): "
+                             "it cannot be resolved");
+    // The foam layers of a layer stack at a coarse spacing (0.091 mm at 0.08 mm): two elements.
+    thin["bodies"][1]["discretization"] = "fe";
+    EXPECT_EQ(refusal(thin), "");
+    const auto scene = test::makeScene(thin);
+    solver::Simulation sim(scene, solver::sceneLibrary(nlohmann::json::object(), "<test>"));
+    ASSERT_NE(sim.finiteElements(), nullptr);
+    EXPECT_EQ(sim.finiteElements()->elements().size(), 2u * 50u); // 2 through 0.15 mm, 50 in r
 }
 
 TEST(BodyLayout, BodiesOutsideTheDomainAreRefused) {
