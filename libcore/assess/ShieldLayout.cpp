@@ -112,10 +112,21 @@ scene::Scene sceneOfRun(const io::RunFileReader& reader) {
     const nlohmann::json doc = reader.scene();
     const std::string label = reader.path().string();
     try {
-        const auto library =
-            solver::sceneLibrary(doc.is_object() ? doc.value("materials", nlohmann::json::object())
-                                                 : nlohmann::json::object(),
-                                 label);
+        // The names the scene may use: the built-in library, the scene's own materials, and
+        // what the run recorded it used (hvi-run --materials lays a library over the built-in
+        // one without writing it into the scene).
+        nlohmann::json materials = doc.is_object()
+                                       ? doc.value("materials", nlohmann::json::object())
+                                       : nlohmann::json::object();
+        const nlohmann::json used = reader.materials();
+        if (used.is_object()) {
+            for (const auto& [name, spec] : used.items()) {
+                if (!materials.contains(name)) {
+                    materials[name] = spec;
+                }
+            }
+        }
+        const auto library = solver::sceneLibrary(materials, label);
         return scene::parseScene(doc, label, library.names());
     } catch (const InputError& e) {
         // The scene is a dataset of the run file: point into it.

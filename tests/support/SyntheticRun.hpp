@@ -130,6 +130,7 @@ struct SyntheticRun {
     std::vector<io::ParticleFields> snapshots;
     std::vector<io::FeFields> feSnapshots; ///< one per snapshot (empty without FE bodies)
     std::vector<io::HistoryRow> history;
+    std::string materialsText = "{}"; ///< the run file's /materials (the models the run used)
 
     /// Builds the lattice (SPH bodies) or mesh (FE bodies) of every body of `doc` and makes
     /// it snapshot 0 at t = 0.
@@ -202,7 +203,7 @@ struct SyntheticRun {
                                                                {"stop_reason", "end_time"},
                                                                {"steps", 2000}}) const {
         std::filesystem::remove(path);
-        io::RunFileWriter writer(path, sceneDoc.dump(), "{}",
+        io::RunFileWriter writer(path, sceneDoc.dump(), materialsText,
                                  {{"tool", "test"}, {"input_file", "synthetic"}});
         for (std::size_t k = 0; k < snapshots.size(); ++k) {
             const io::FeFieldsView mesh = io::viewOf(feSnapshots[k]);

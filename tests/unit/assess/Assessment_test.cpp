@@ -5,6 +5,7 @@
 #include "io/JsonInput.hpp"
 
 #include <algorithm>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -111,6 +112,21 @@ TEST(Assessment, BodyIdOutsideTheSceneIsNamed) {
     const std::string message = assessError(path);
     EXPECT_NE(message.find("/snapshots/000001/BodyId: particle 7 has body id 9"), std::string::npos)
         << message;
+}
+
+// hvi-run --materials lays a library over the built-in one: the scene names a material it does
+// not define, and the run file's /materials holds it.
+TEST(Assessment, MaterialOfALibraryGivenToTheRunIsKnown) {
+    std::ifstream in(test::dataPath("material/user_library.json"));
+    const nlohmann::json library = nlohmann::json::parse(in);
+    nlohmann::json doc = test::whippleScene();
+    doc["materials"] = library["materials"];
+    doc["bodies"][2]["material"] = "MyAl";
+    SyntheticRun run(doc);
+    run.addSnapshot(1.0);
+    run.sceneDoc.erase("materials");
+    run.materialsText = library["materials"].dump();
+    EXPECT_EQ(assessError(run.write(test::tempPath("run_materials.h5"))), "");
 }
 
 TEST(Assessment, RunWithoutSnapshotsIsRejected) {
