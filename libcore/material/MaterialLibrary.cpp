@@ -334,6 +334,16 @@ std::optional<JohnsonCookDamage> readFailure(Section& s) {
         s.number("compression_cutoff_triaxiality",
                  "sigma* below which no damage accumulates [-] (default -1/3, Bao-Wierzbicki)", {},
                  JohnsonCookDamage::kDefaultCompressionCutoff);
+    d.compressionClosure = s.number(
+        "compression_closure",
+        "fraction in [0, 1] of the mirrored tensile rate at which plastic flow below the cut-off "
+        "closes damage [-] (default 0: none; 1: Kanvinde-Deierlein cyclic void growth)",
+        atLeast(0.0), 0.0);
+    if (d.compressionClosure > 1.0) {
+        s.issue(s.pointerTo("compression_closure"),
+                "must be at most 1, got " + formatNumber(d.compressionClosure),
+                "fraction in [0, 1]");
+    }
     if (d.maxTriaxiality <= d.minTriaxiality) {
         s.issue(s.pointerTo("triaxiality_max"),
                 "must exceed triaxiality_min (" + formatNumber(d.minTriaxiality) + "), got " +

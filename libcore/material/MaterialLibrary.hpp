@@ -15,7 +15,7 @@
 //                       "reference_strain_rate_per_s" (default 1), "source" },   optional
 //         "failure":  { "type": "johnson_cook", "D1".."D5", "reference_strain_rate_per_s",
 //                       "triaxiality_min", "triaxiality_max", "min_failure_strain",
-//                       "compression_cutoff_triaxiality" (defaults in
+//                       "compression_cutoff_triaxiality", "compression_closure" (defaults in
 //                       JohnsonCookDamage.hpp), "source" }      optional, needs strength
 //         "spall":    { "strength_GPa", "rate_exponent" (default 0),
 //                       "reference_strain_rate_per_s" (default 1), "source" }  optional,

@@ -30,6 +30,15 @@
 //   gives inside its calibrated range (0.136 at sigma* = 1) and above the elastic strain at
 //   yield (Y/3G ~ 0.0035), so a point must flow plastically before it can fail.
 //
+// Optional (compressionClosure c in [0, 1], default 0): below the cut-off, plastic flow closes
+// damage instead of leaving it, D -= c d eps_p / eps_f(|sigma*|), floored at 0; failed
+// material (D >= 1) stays failed. c = 1 is the cyclic void growth model of Kanvinde and
+// Deierlein, J. Eng. Mech. 133 (2007) 701-712 (void growth under tension, shrinkage under
+// compression at the mirrored rate), without that model's degradation of the critical value
+// with accumulated plastic strain. Monotonic paths are unchanged; reversed plastic flow (a
+// wall cycled by in-plane waves, docs/notebook/spall-and-damage.md) no longer counts as if
+// every increment pulled the same way.
+//
 // Failed material (D >= 1) carries no deviatoric stress and no tension: applyFailedState
 // zeroes S and floors the pressure at 0. It keeps its mass, momentum and compressive
 // response (the "retain inertia" convention, hydrocode-notes.md section 3).
@@ -61,8 +70,9 @@ struct JohnsonCookDamage {
     double referenceStrainRatePerUs = kDefaultReferenceStrainRatePerUs; ///< [1/us]
     double minTriaxiality = kDefaultMinTriaxiality;
     double maxTriaxiality = kDefaultMaxTriaxiality;
-    double minFailureStrain = kDefaultMinFailureStrain; ///< > 0
+    double minFailureStrain = kDefaultMinFailureStrain;   ///< > 0
     double compressionCutoff = kDefaultCompressionCutoff; ///< no damage below this sigma*
+    double compressionClosure = 0.0; ///< in [0, 1]: damage closed below the cut-off
 
     /// sigma* = -P / sigma_eq, clamped to [minTriaxiality, maxTriaxiality]. sigma_eq = 0
     /// gives the bound on the side of the mean stress (0 when P = 0 too).
@@ -94,13 +104,19 @@ struct JohnsonCookDamage {
     }
 
     /// The damage after a plastic strain increment at pressure P and von Mises stress
-    /// sigma_eq [GPa]: unchanged below the compression cut-off, else accumulate().
+    /// sigma_eq [GPa]: accumulate() above the compression cut-off; below it unchanged, or
+    /// closed by compressionClosure at the mirrored rate (failed material stays failed).
     double damageAfter(double damage, double plasticStrainIncrement, double pressure,
                        double vonMises, double strainRatePerUs,
                        double homologousTemperature) const noexcept {
         const double sStar = triaxiality(pressure, vonMises);
         if (sStar < compressionCutoff) {
-            return damage;
+            if (compressionClosure <= 0.0 || damage >= 1.0) {
+                return damage;
+            }
+            const double mirrored = failureStrain(-sStar, strainRatePerUs, homologousTemperature);
+            const double d = damage - compressionClosure * plasticStrainIncrement / mirrored;
+            return d < 0.0 ? 0.0 : d;
         }
         return accumulate(damage, plasticStrainIncrement,
                           failureStrain(sStar, strainRatePerUs, homologousTemperature));

@@ -137,7 +137,62 @@ TEST(JohnsonCookDamage, UpperClampHoldsTheLastCalibratedFailureStrain) {
     EXPECT_TRUE(near("eps_f(3) -> eps_f(1)",
                      al.failureStrain(al.triaxiality(-0.9, 0.3), kQuasiStatic, 0.0), atOne, 0.0,
                      1e-14));
-    EXPECT_TRUE(near("hydrostatic tension", al.failureStrain(al.triaxiality(-0.9, 0.0),
-                                                             kQuasiStatic, 0.0),
-                     atOne, 0.0, 1e-14));
+    EXPECT_TRUE(near("hydrostatic tension",
+                     al.failureStrain(al.triaxiality(-0.9, 0.0), kQuasiStatic, 0.0), atOne, 0.0,
+                     1e-14));
+}
+
+// Closure below the cut-off (Kanvinde and Deierlein's cyclic void growth in the Johnson-Cook
+// form). A plane-stress equibiaxial strain cycle, the state of a wall cycled by in-plane waves:
+// sigma* = +2/3 in tension (P = -0.2 GPa, sigma_eq = 0.3 GPa), -2/3 in compression, the same
+// plastic increment each half.
+namespace {
+constexpr double kSigmaEq = 0.3;
+constexpr double kTensionP = -0.2, kCompressionP = 0.2; // sigma* = +-2/3
+double epsF23() {
+    return -0.77 + 1.45 * std::exp(-0.47 * 2.0 / 3.0); // the fit at sigma* = 2/3, 0.29
+}
+double afterCycles(const JohnsonCookDamage& model, int cycles, double increment) {
+    double d = 0.0;
+    for (int k = 0; k < cycles; ++k) {
+        d = model.damageAfter(d, increment, kTensionP, kSigmaEq, kQuasiStatic, 0.0);
+        d = model.damageAfter(d, increment, kCompressionP, kSigmaEq, kQuasiStatic, 0.0);
+    }
+    return d;
+}
+} // namespace
+
+TEST(JohnsonCookDamage, ClosureLeavesMonotonicPathsAlone) {
+    JohnsonCookDamage closing = kAl;
+    closing.compressionClosure = 1.0;
+    double open = 0.0, shut = 0.0;
+    for (int k = 0; k < 100; ++k) {
+        open = kAl.damageAfter(open, 0.002, kTensionP, kSigmaEq, kQuasiStatic, 0.0);
+        shut = closing.damageAfter(shut, 0.002, kTensionP, kSigmaEq, kQuasiStatic, 0.0);
+    }
+    EXPECT_EQ(shut, open);
+    EXPECT_TRUE(near("D after 0.2 of tension", open, 0.2 / epsF23(), 0.0, 1e-12));
+}
+
+TEST(JohnsonCookDamage, ClosureUndoesSymmetricCycles) {
+    // Without closure each cycle adds its tensile half: 30 cycles of 0.005 fail the point (the
+    // Johnson-Cook sum reaches 30 x 0.005 / 0.29 > 0.5 and goes on); with full closure each
+    // cycle ends where it began; with half, half the tensile increment stays.
+    EXPECT_TRUE(near("no closure", afterCycles(kAl, 30, 0.005), 30 * 0.005 / epsF23(), 0.0, 1e-12));
+    JohnsonCookDamage closing = kAl;
+    closing.compressionClosure = 1.0;
+    EXPECT_TRUE(near("full closure", afterCycles(closing, 30, 0.005), 0.0, 1e-15, 0.0));
+    closing.compressionClosure = 0.5;
+    EXPECT_TRUE(near("half closure", afterCycles(closing, 30, 0.005), 30 * 0.5 * 0.005 / epsF23(),
+                     0.0, 1e-12));
+}
+
+TEST(JohnsonCookDamage, ClosureStopsAtZeroAndNeverMendsFailedMaterial) {
+    JohnsonCookDamage closing = kAl;
+    closing.compressionClosure = 1.0;
+    // A shock (P = 10 GPa) after some damage: closed to zero, not below.
+    EXPECT_EQ(closing.damageAfter(0.25, 0.05, 10.0, kSigmaEq, kQuasiStatic, 0.0), 0.0);
+    EXPECT_EQ(closing.damageAfter(1.0, 0.05, kCompressionP, kSigmaEq, kQuasiStatic, 0.0), 1.0);
+    // Between the cut-off and zero triaxiality damage still grows (shear fracture).
+    EXPECT_GT(closing.damageAfter(0.25, 0.01, 0.05, kSigmaEq, kQuasiStatic, 0.0), 0.25);
 }

@@ -209,6 +209,40 @@ TEST(MaterialLibrary, AluminiumSpallStrengthAndDamageRange) {
         std::get<JohnsonCookDamage>(MaterialLibrary::builtin().get("Al6061-T6").failure);
     EXPECT_EQ(d.maxTriaxiality, 1.0);
     EXPECT_EQ(d.compressionCutoff, -1.0 / 3.0);
+    EXPECT_EQ(d.compressionClosure, 0.0);
+}
+
+TEST(MaterialLibrary, CompressionClosureIsReadAndBounded) {
+    nlohmann::json doc = readJson(hvi::test::dataPath("material/user_library.json"));
+    nlohmann::json& al = doc["materials"]["MyAl"];
+    al["strength"] = {{"type", "johnson_cook"},
+                      {"A_MPa", 289.6},
+                      {"B_MPa", 203.4},
+                      {"n", 0.35},
+                      {"C", 0.011},
+                      {"m", 1.34},
+                      {"source", "test"}};
+    al["elastic"] = {{"shear_modulus_GPa", 27.6}, {"source", "test"}};
+    al["thermal"] = {{"specific_heat_J_kgK", 885.0},
+                     {"room_temperature_K", 294.0},
+                     {"melt_temperature_K", 925.0},
+                     {"source", "test"}};
+    doc["materials"]["MyAl"]["failure"] = {{"type", "johnson_cook"},
+                                           {"D1", -0.77},
+                                           {"D2", 1.45},
+                                           {"D3", -0.47},
+                                           {"D4", 0.0},
+                                           {"D5", 1.6},
+                                           {"compression_closure", 0.5},
+                                           {"source", "test"}};
+    const auto library = MaterialLibrary::fromJson(doc, "doc");
+    EXPECT_EQ(std::get<JohnsonCookDamage>(library.get("MyAl").failure).compressionClosure, 0.5);
+    doc["materials"]["MyAl"]["failure"]["compression_closure"] = 1.5;
+    const std::string message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(message.find("doc: /materials/MyAl/failure/compression_closure: must be at most 1, "
+                           "got 1.5"),
+              std::string::npos)
+        << message;
 }
 
 TEST(MaterialLibrary, BadSpallStrengthIsReportedByPointer) {
