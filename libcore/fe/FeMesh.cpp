@@ -14,6 +14,7 @@ void ElementSet::enableStrength() {
     srz.assign(size(), 0.0);
     plasticStrain.assign(size(), 0.0);
     damage.assign(size(), 0.0);
+    tensionOnset.assign(size(), 0.0);
 }
 
 BodyMesh meshBody(const scene::Body& body, int32_t bodyIndex, double rho0, double e0,
@@ -95,6 +96,7 @@ BodyMesh meshBody(const scene::Body& body, int32_t bodyIndex, double rho0, doubl
                 elements.srz.push_back(0.0);
                 elements.plasticStrain.push_back(0.0);
                 elements.damage.push_back(0.0);
+                elements.tensionOnset.push_back(0.0);
             }
         }
     }

@@ -339,6 +339,11 @@ std::optional<JohnsonCookDamage> readFailure(Section& s) {
         "fraction in [0, 1] of the mirrored tensile rate at which plastic flow below the cut-off "
         "closes damage [-] (default 0: none; 1: Kanvinde-Deierlein cyclic void growth)",
         atLeast(0.0), 0.0);
+    d.cyclicDegradation = s.number(
+        "cyclic_degradation",
+        "lambda >= 0 of the critical damage exp(-lambda eps_p,0), eps_p,0 the plastic strain at "
+        "the start of the tensile excursion [-] (default 0: none; Kanvinde-Deierlein)",
+        atLeast(0.0), 0.0);
     if (d.compressionClosure > 1.0) {
         s.issue(s.pointerTo("compression_closure"),
                 "must be at most 1, got " + formatNumber(d.compressionClosure),

@@ -15,8 +15,9 @@
 //                       "reference_strain_rate_per_s" (default 1), "source" },   optional
 //         "failure":  { "type": "johnson_cook", "D1".."D5", "reference_strain_rate_per_s",
 //                       "triaxiality_min", "triaxiality_max", "min_failure_strain",
-//                       "compression_cutoff_triaxiality", "compression_closure" (defaults in
-//                       JohnsonCookDamage.hpp), "source" }      optional, needs strength
+//                       "compression_cutoff_triaxiality", "compression_closure",
+//                       "cyclic_degradation" (defaults in JohnsonCookDamage.hpp),
+//                       "source" }                              optional, needs strength
 //         "spall":    { "strength_GPa", "rate_exponent" (default 0),
 //                       "reference_strain_rate_per_s" (default 1), "source" }  optional,
 //                                                                   needs strength

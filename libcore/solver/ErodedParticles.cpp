@@ -111,6 +111,7 @@ std::vector<int32_t> ErodedParticles::convert(const std::vector<int32_t>& eroded
             particles.srz[i] = elements.srz[e];
             particles.plasticStrain[i] = elements.plasticStrain[e];
             particles.damage[i] = elements.damage[e];
+            particles.tensionOnset[i] = elements.tensionOnset[e];
         }
         created.push_back(slot);
     }

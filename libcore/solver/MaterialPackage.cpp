@@ -146,18 +146,19 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
                 },
                 spec.strength);
             const double dEps = material::radialReturn(s, yield, spec.shearModulus);
-            ps.plasticStrain[i] += dEps;
             if (dEps > 0.0) {
                 std::visit(
                     [&](const auto& model) {
                         using F = std::decay_t<decltype(model)>;
                         if constexpr (!std::is_same_v<F, material::NoFailure>) {
-                            ps.damage[i] = model.damageAfter(ps.damage[i], dEps, ps.p[i],
+                            ps.damage[i] = model.damageAfter(ps.damage[i], ps.tensionOnset[i],
+                                                             ps.plasticStrain[i], dEps, ps.p[i],
                                                              s.vonMises(), rate, tStar);
                         }
                     },
                     spec.failure);
             }
+            ps.plasticStrain[i] += dEps;
             if (spec.spall) {
                 ps.damage[i] = spec.spall->damageAfter(ps.damage[i], s, ps.p[i], rate, dt);
             }

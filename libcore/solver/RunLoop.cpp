@@ -127,6 +127,7 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
         s.doubles["srz"] = ps.srz;
         s.doubles["plastic_strain"] = ps.plasticStrain;
         s.doubles["damage"] = ps.damage;
+        s.doubles["tension_onset"] = ps.tensionOnset;
     }
     s.ints["body"] = ps.body;
     s.ints["alive"] = std::vector<int32_t>(ps.alive.begin(), ps.alive.end());
@@ -169,6 +170,7 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
             s.doubles["element_srz"] = el.srz;
             s.doubles["element_plastic_strain"] = el.plasticStrain;
             s.doubles["element_damage"] = el.damage;
+            s.doubles["element_tension_onset"] = el.tensionOnset;
         }
     }
     const Totals t = sim.totals();
@@ -233,6 +235,7 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
         take("srz", ps.srz);
         take("plastic_strain", ps.plasticStrain);
         take("damage", ps.damage);
+        take("tension_onset", ps.tensionOnset);
     }
     auto takeFlags = [&](const char* name, std::vector<uint8_t>& into) {
         auto it = s.ints.find(name);
@@ -277,6 +280,7 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
             take("element_srz", el.srz);
             take("element_plastic_strain", el.plasticStrain);
             take("element_damage", el.damage);
+            take("element_tension_onset", el.tensionOnset);
         }
         erodedEnergy = s.extra.value("eroded_energy_J", 0.0);
         erodedCount = s.extra.value("eroded_elements", std::size_t{0});

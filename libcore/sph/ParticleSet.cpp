@@ -26,6 +26,7 @@ void ParticleSet::add(double zMm, double rMm, double vzKmS, double vrKmS, double
         srz.push_back(0.0);
         plasticStrain.push_back(0.0);
         damage.push_back(0.0);
+        tensionOnset.push_back(0.0);
     }
 }
 
@@ -37,6 +38,7 @@ void ParticleSet::enableStrength() {
     srz.assign(n, 0.0);
     plasticStrain.assign(n, 0.0);
     damage.assign(n, 0.0);
+    tensionOnset.assign(n, 0.0);
 }
 
 void ParticleRates::resize(std::size_t n, bool withStrength) {

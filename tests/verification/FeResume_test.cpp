@@ -1,11 +1,15 @@
 // Stop and resume (developers' guide: long runs can be stopped and resumed): a run with SPH
 // particles, an eroding FE plate and contact, checkpointed to disk midway and resumed in a new
-// Simulation, ends bit for bit where the uninterrupted run ends.
+// Simulation, ends bit for bit where the uninterrupted run ends. The aluminium carries the
+// cyclic damage options (compression closure, degradation), whose per-point state
+// (tensionOnset) the checkpoint must carry too.
 #include "SceneRun.hpp"
 #include "TestPaths.hpp"
 #include "io/Checkpoint.hpp"
+#include "material/MaterialLibrary.hpp"
 #include "solver/RunLoop.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <gtest/gtest.h>
 
@@ -14,28 +18,47 @@ using nlohmann::json;
 
 namespace {
 
+/// Al 6061-T6 with full closure and lambda = 1, as the scene's material "AlCyclic".
+json cyclicAluminium() {
+    json entry = json::parse(material::MaterialLibrary::builtin().get("Al6061-T6").definitionJson);
+    entry["failure"]["compression_closure"] = 1.0;
+    entry["failure"]["cyclic_degradation"] = 1.0;
+    return {{"AlCyclic", entry}};
+}
+
 json resumeScene() {
     return {{"geometry", "axisymmetric"},
+            {"materials", cyclicAluminium()},
             {"sph", {{"particle_spacing_mm", 0.05}}},
             {"fe", {{"element_size_mm", 0.05}}},
-            {"run", {{"end_time_us", 10.0}, {"stop_debris_speed_km_s", 0.0},
-                     {"stop_no_new_penetration_us", 0.0}}},
+            {"run",
+             {{"end_time_us", 10.0},
+              {"stop_debris_speed_km_s", 0.0},
+              {"stop_no_new_penetration_us", 0.0}}},
             {"domain", {{"radius_mm", 4.5}}},
             {"bodies",
-             {{{"name", "projectile"}, {"role", "projectile"}, {"material", "Al6061-T6"},
+             {{{"name", "projectile"},
+               {"role", "projectile"},
+               {"material", "AlCyclic"},
                {"shape", {{"type", "sphere"}, {"center_z_mm", -0.55}, {"radius_mm", 0.5}}},
                {"velocity", {{"z_km_s", 3.0}}}},
-              {{"name", "plate"}, {"role", "bumper"}, {"material", "Al6061-T6"},
+              {{"name", "plate"},
+               {"role", "bumper"},
+               {"material", "AlCyclic"},
                {"discretization", "fe"},
-               {"shape", {{"type", "plate"}, {"z_front_mm", 0.0}, {"thickness_mm", 0.5},
-                          {"outer_radius_mm", 4.0}}}}}}};
+               {"shape",
+                {{"type", "plate"},
+                 {"z_front_mm", 0.0},
+                 {"thickness_mm", 0.5},
+                 {"outer_radius_mm", 4.0}}}}}}};
 }
 
 } // namespace
 
 TEST(FeResume, CheckpointedRunEndsBitForBit) {
-    const auto sc = test::makeScene(resumeScene());
-    const auto library = solver::sceneLibrary(json::object(), "<test>");
+    const json doc = resumeScene();
+    const auto sc = test::makeScene(doc);
+    const auto library = solver::sceneLibrary(doc["materials"], "<test>");
     solver::Simulation straight(sc, library);
     for (int k = 0; k < 150; ++k) {
         straight.advance();
@@ -64,4 +87,13 @@ TEST(FeResume, CheckpointedRunEndsBitForBit) {
               resumed.finiteElements()->elements().alive);
     EXPECT_EQ(straight.energyError(), resumed.energyError());
     EXPECT_EQ(straight.contact()->dissipatedEnergy(), resumed.contact()->dissipatedEnergy());
+    // The damage and its state; some points began a tensile excursion after compressive flow.
+    const auto& onset = straight.finiteElements()->elements().tensionOnset;
+    ASSERT_TRUE(std::any_of(onset.begin(), onset.end(), [](double v) { return v > 0.0; }))
+        << "the test must cover a tensile excursion after compression";
+    EXPECT_EQ(straight.finiteElements()->elements().damage,
+              resumed.finiteElements()->elements().damage);
+    EXPECT_EQ(onset, resumed.finiteElements()->elements().tensionOnset);
+    EXPECT_EQ(straight.particles().damage, resumed.particles().damage);
+    EXPECT_EQ(straight.particles().tensionOnset, resumed.particles().tensionOnset);
 }

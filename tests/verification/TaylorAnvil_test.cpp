@@ -14,9 +14,10 @@
 // Johnson-Cook strength constants (unchanged here), not the failure model under test, and
 // those constants are fitted at lower strain rates than a Taylor foot sees.
 // Diagnostics (docs/notebook/spall-and-damage.md): TAYLOR_H and TAYLOR_SPH_H set the spacing,
-// TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_WHERE=1 lists the
-// failed elements, TAYLOR_SPH_KERNEL and TAYLOR_SPH_HFAC set the SPH kernel and h / spacing;
-// each run prints the largest principal tension of the rod and where.
+// TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_CLOSURE=c sets its
+// failure.compression_closure, TAYLOR_WHERE=1 lists the failed elements, TAYLOR_SPH_KERNEL
+// and TAYLOR_SPH_HFAC set the SPH kernel and h / spacing; each run prints the largest
+// principal tension of the rod and where.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "material/MaterialLibrary.hpp"
@@ -195,10 +196,17 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
     if (const char* factor = std::getenv("TAYLOR_SPH_HFAC")) {
         doc["sph"]["smoothing_length_factor"] = std::atof(factor);
     }
-    if (std::getenv("TAYLOR_DROP")) { // diagnostics: drop "spall" or "failure"
+    const char* drop = std::getenv("TAYLOR_DROP");       // diagnostics: drop "spall" or
+    const char* closure = std::getenv("TAYLOR_CLOSURE"); // "failure"; set the closure
+    if (drop || closure) {
         json entry =
             json::parse(material::MaterialLibrary::builtin().get("Al6061-T6").definitionJson);
-        entry.erase(std::getenv("TAYLOR_DROP"));
+        if (drop) {
+            entry.erase(drop);
+        }
+        if (closure && entry.contains("failure")) {
+            entry["failure"]["compression_closure"] = std::atof(closure);
+        }
         doc["materials"] = {{"AlT", entry}};
         for (auto& b : doc["bodies"]) {
             if (b["material"] == "Al6061-T6") {

@@ -30,14 +30,22 @@
 //   gives inside its calibrated range (0.136 at sigma* = 1) and above the elastic strain at
 //   yield (Y/3G ~ 0.0035), so a point must flow plastically before it can fail.
 //
-// Optional (compressionClosure c in [0, 1], default 0): below the cut-off, plastic flow closes
-// damage instead of leaving it, D -= c d eps_p / eps_f(|sigma*|), floored at 0; failed
-// material (D >= 1) stays failed. c = 1 is the cyclic void growth model of Kanvinde and
-// Deierlein, J. Eng. Mech. 133 (2007) 701-712 (void growth under tension, shrinkage under
-// compression at the mirrored rate), without that model's degradation of the critical value
-// with accumulated plastic strain. Monotonic paths are unchanged; reversed plastic flow (a
-// wall cycled by in-plane waves, docs/notebook/spall-and-damage.md) no longer counts as if
-// every increment pulled the same way.
+// Optional, for reversed plastic flow (docs/notebook/spall-and-damage.md: a wall cycled by
+// in-plane waves), the two parts of the cyclic void growth model of Kanvinde and Deierlein,
+// J. Eng. Mech. 133 (2007) 701-712, in Johnson-Cook form:
+// * compressionClosure c in [0, 1], default 0: below the cut-off, plastic flow closes damage
+//   instead of leaving it, D -= c d eps_p / eps_f(|sigma*|), floored at 0; failed material
+//   (D >= 1) stays failed. c = 1 is that model's void shrinkage under compression at the
+//   mirrored rate of growth.
+// * cyclicDegradation lambda >= 0, default 0: failure comes at D >= exp(-lambda eps_p,0), with
+//   eps_p,0 the plastic strain at the start of the current tensile excursion (the plastic
+//   strain before the first increment above the cut-off that follows one below it; 0 when
+//   the point has never flowed below the cut-off). That model's degradation of the critical
+//   void growth index with the plastic strain accumulated before each tensile cycle; lambda
+//   is a material constant fitted to cyclic tests (unknown for 6061-T6, an input).
+// A monotonic path never flows below the cut-off, so both reduce to Johnson-Cook there. The
+// per-point state is the damage D and tensionOnset (eps_p,0, or kCompressiveFlow while the
+// last plastic increment was below the cut-off).
 //
 // Failed material (D >= 1) carries no deviatoric stress and no tension: applyFailedState
 // zeroes S and floors the pressure at 0. It keeps its mass, momentum and compressive
@@ -73,6 +81,11 @@ struct JohnsonCookDamage {
     double minFailureStrain = kDefaultMinFailureStrain;   ///< > 0
     double compressionCutoff = kDefaultCompressionCutoff; ///< no damage below this sigma*
     double compressionClosure = 0.0; ///< in [0, 1]: damage closed below the cut-off
+    double cyclicDegradation = 0.0;  ///< lambda >= 0: critical D = exp(-lambda eps_p,0)
+
+    /// tensionOnset while the point's last plastic increment was below the cut-off: the next
+    /// increment above it starts a tensile excursion.
+    static constexpr double kCompressiveFlow = -1.0;
 
     /// sigma* = -P / sigma_eq, clamped to [minTriaxiality, maxTriaxiality]. sigma_eq = 0
     /// gives the bound on the side of the mean stress (0 when P = 0 too).
@@ -103,14 +116,18 @@ struct JohnsonCookDamage {
         return d > 1.0 ? 1.0 : d;
     }
 
-    /// The damage after a plastic strain increment at pressure P and von Mises stress
-    /// sigma_eq [GPa]: accumulate() above the compression cut-off; below it unchanged, or
-    /// closed by compressionClosure at the mirrored rate (failed material stays failed).
-    double damageAfter(double damage, double plasticStrainIncrement, double pressure,
-                       double vonMises, double strainRatePerUs,
-                       double homologousTemperature) const noexcept {
+    /// The damage after a plastic strain increment d eps_p (from plasticStrainBefore) at
+    /// pressure P and von Mises stress sigma_eq [GPa]. Below the compression cut-off: D is
+    /// unchanged, or closed by compressionClosure at the mirrored rate (failed material stays
+    /// failed), and tensionOnset becomes kCompressiveFlow. Above it: accumulate(), a new
+    /// tensile excursion recorded in tensionOnset if the last flow was compressive, and D set
+    /// to 1 once it reaches the critical value exp(-cyclicDegradation eps_p,0).
+    double damageAfter(double damage, double& tensionOnset, double plasticStrainBefore,
+                       double plasticStrainIncrement, double pressure, double vonMises,
+                       double strainRatePerUs, double homologousTemperature) const noexcept {
         const double sStar = triaxiality(pressure, vonMises);
         if (sStar < compressionCutoff) {
+            tensionOnset = kCompressiveFlow;
             if (compressionClosure <= 0.0 || damage >= 1.0) {
                 return damage;
             }
@@ -118,8 +135,17 @@ struct JohnsonCookDamage {
             const double d = damage - compressionClosure * plasticStrainIncrement / mirrored;
             return d < 0.0 ? 0.0 : d;
         }
-        return accumulate(damage, plasticStrainIncrement,
-                          failureStrain(sStar, strainRatePerUs, homologousTemperature));
+        if (tensionOnset < 0.0) {
+            tensionOnset = plasticStrainBefore;
+        }
+        const double d = accumulate(damage, plasticStrainIncrement,
+                                    failureStrain(sStar, strainRatePerUs, homologousTemperature));
+        return d >= criticalDamage(tensionOnset) ? 1.0 : d;
+    }
+
+    /// The damage at which a tensile excursion that began at plastic strain eps_p,0 fails.
+    double criticalDamage(double tensionOnsetStrain) const noexcept {
+        return cyclicDegradation > 0.0 ? std::exp(-cyclicDegradation * tensionOnsetStrain) : 1.0;
     }
 
     /// Failed material (D >= 1): no deviatoric stress, no tension (P floored at 0).

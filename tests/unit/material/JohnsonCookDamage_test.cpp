@@ -18,6 +18,28 @@ namespace {
 const JohnsonCookDamage kAl{.d1 = -0.77, .d2 = 1.45, .d3 = -0.47, .d4 = 0.0, .d5 = 1.6};
 constexpr double kQuasiStatic = 1.0e-6; // the reference rate 1/s in 1/us
 
+/// One material point under the damage law: D, the tensile-excursion state, eps_p.
+struct Point {
+    double damage = 0.0;
+    double tensionOnset = 0.0;
+    double plasticStrain = 0.0;
+    /// A plastic increment at pressure P and sigma_eq [GPa], quasi-static, room temperature.
+    double flow(const JohnsonCookDamage& model, double increment, double pressure,
+                double vonMises) {
+        damage = model.damageAfter(damage, tensionOnset, plasticStrain, increment, pressure,
+                                   vonMises, kQuasiStatic, 0.0);
+        plasticStrain += increment;
+        return damage;
+    }
+};
+
+/// The damage after one increment from D, for a point that has not flowed before.
+double damageAfter(const JohnsonCookDamage& model, double damage, double increment, double pressure,
+                   double vonMises) {
+    Point point{.damage = damage};
+    return point.flow(model, increment, pressure, vonMises);
+}
+
 } // namespace
 
 TEST(JohnsonCookDamage, FailureStrainTableOfTheNotes) {
@@ -116,15 +138,15 @@ TEST(JohnsonCookDamage, FailedMaterialCarriesNoShearAndNoTension) {
 TEST(JohnsonCookDamage, NoDamageBelowTheCompressionCutoff) {
     EXPECT_EQ(kAl.compressionCutoff, -1.0 / 3.0);
     // Just above the cut-off (sigma* = -0.333): damage accumulates.
-    const double aboveCutoff = kAl.damageAfter(0.0, 0.01, 0.0999, 0.3, kQuasiStatic, 0.0);
+    const double aboveCutoff = damageAfter(kAl, 0.0, 0.01, 0.0999, 0.3);
     EXPECT_TRUE(near("D at sigma* = -0.333", aboveCutoff,
                      0.01 / kAl.failureStrain(-0.333, kQuasiStatic, 0.0), 0.0, 1e-12));
     // A shock: P = 10 GPa, sigma_eq = 0.3 GPa.
-    EXPECT_EQ(kAl.damageAfter(0.25, 0.05, 10.0, 0.3, kQuasiStatic, 0.0), 0.25);
+    EXPECT_EQ(damageAfter(kAl, 0.25, 0.05, 10.0, 0.3), 0.25);
     // Just below the cut-off.
-    EXPECT_EQ(kAl.damageAfter(0.25, 0.05, 0.1001, 0.3, kQuasiStatic, 0.0), 0.25);
+    EXPECT_EQ(damageAfter(kAl, 0.25, 0.05, 0.1001, 0.3), 0.25);
     // Tension: the JC increment.
-    EXPECT_TRUE(near("D in tension", kAl.damageAfter(0.0, 0.01, -0.1, 0.3, kQuasiStatic, 0.0),
+    EXPECT_TRUE(near("D in tension", damageAfter(kAl, 0.0, 0.01, -0.1, 0.3),
                      0.01 / kAl.failureStrain(1.0 / 3.0, kQuasiStatic, 0.0), 0.0, 1e-12));
 }
 
@@ -153,25 +175,36 @@ double epsF23() {
     return -0.77 + 1.45 * std::exp(-0.47 * 2.0 / 3.0); // the fit at sigma* = 2/3, 0.29
 }
 double afterCycles(const JohnsonCookDamage& model, int cycles, double increment) {
-    double d = 0.0;
+    Point point;
     for (int k = 0; k < cycles; ++k) {
-        d = model.damageAfter(d, increment, kTensionP, kSigmaEq, kQuasiStatic, 0.0);
-        d = model.damageAfter(d, increment, kCompressionP, kSigmaEq, kQuasiStatic, 0.0);
+        point.flow(model, increment, kTensionP, kSigmaEq);
+        point.flow(model, increment, kCompressionP, kSigmaEq);
     }
-    return d;
+    return point.damage;
+}
+/// The first cycle (0-based) whose tensile half fails the point, or -1 within maxCycles.
+int failingCycle(const JohnsonCookDamage& model, int maxCycles, double increment) {
+    Point point;
+    for (int k = 0; k < maxCycles; ++k) {
+        if (point.flow(model, increment, kTensionP, kSigmaEq) >= 1.0) {
+            return k;
+        }
+        point.flow(model, increment, kCompressionP, kSigmaEq);
+    }
+    return -1;
 }
 } // namespace
 
 TEST(JohnsonCookDamage, ClosureLeavesMonotonicPathsAlone) {
     JohnsonCookDamage closing = kAl;
     closing.compressionClosure = 1.0;
-    double open = 0.0, shut = 0.0;
+    Point open, shut;
     for (int k = 0; k < 100; ++k) {
-        open = kAl.damageAfter(open, 0.002, kTensionP, kSigmaEq, kQuasiStatic, 0.0);
-        shut = closing.damageAfter(shut, 0.002, kTensionP, kSigmaEq, kQuasiStatic, 0.0);
+        open.flow(kAl, 0.002, kTensionP, kSigmaEq);
+        shut.flow(closing, 0.002, kTensionP, kSigmaEq);
     }
-    EXPECT_EQ(shut, open);
-    EXPECT_TRUE(near("D after 0.2 of tension", open, 0.2 / epsF23(), 0.0, 1e-12));
+    EXPECT_EQ(shut.damage, open.damage);
+    EXPECT_TRUE(near("D after 0.2 of tension", open.damage, 0.2 / epsF23(), 0.0, 1e-12));
 }
 
 TEST(JohnsonCookDamage, ClosureUndoesSymmetricCycles) {
@@ -191,8 +224,58 @@ TEST(JohnsonCookDamage, ClosureStopsAtZeroAndNeverMendsFailedMaterial) {
     JohnsonCookDamage closing = kAl;
     closing.compressionClosure = 1.0;
     // A shock (P = 10 GPa) after some damage: closed to zero, not below.
-    EXPECT_EQ(closing.damageAfter(0.25, 0.05, 10.0, kSigmaEq, kQuasiStatic, 0.0), 0.0);
-    EXPECT_EQ(closing.damageAfter(1.0, 0.05, kCompressionP, kSigmaEq, kQuasiStatic, 0.0), 1.0);
+    EXPECT_EQ(damageAfter(closing, 0.25, 0.05, 10.0, kSigmaEq), 0.0);
+    EXPECT_EQ(damageAfter(closing, 1.0, 0.05, kCompressionP, kSigmaEq), 1.0);
     // Between the cut-off and zero triaxiality damage still grows (shear fracture).
-    EXPECT_GT(closing.damageAfter(0.25, 0.01, 0.05, kSigmaEq, kQuasiStatic, 0.0), 0.25);
+    EXPECT_GT(damageAfter(closing, 0.25, 0.01, 0.05, kSigmaEq), 0.25);
+}
+
+// The degradation of the critical damage, exp(-lambda eps_p,0) (Kanvinde and Deierlein 2007).
+// A monotonic tension path never flowed below the cut-off (eps_p,0 = 0): it fails where
+// Johnson-Cook does, at eps_f, whatever lambda.
+TEST(JohnsonCookDamage, DegradationLeavesMonotonicPathsAlone) {
+    JohnsonCookDamage degrading = kAl;
+    degrading.compressionClosure = 1.0;
+    degrading.cyclicDegradation = 2.0;
+    Point point;
+    while (point.flow(degrading, 0.001, kTensionP, kSigmaEq) < 1.0) {
+    }
+    EXPECT_EQ(point.tensionOnset, 0.0);
+    EXPECT_TRUE(near("eps_p at failure", point.plasticStrain, epsF23(), 0.001, 0.0));
+}
+
+// Compression first (a shock: eps_p = 0.3 below the cut-off), then tension: the excursion
+// starts at eps_p,0 = 0.3 and fails at D = exp(-lambda 0.3), after eps_f exp(-lambda 0.3) of
+// tensile plastic strain, to within one increment.
+TEST(JohnsonCookDamage, DegradationCountsTheStrainBeforeTheTensileExcursion) {
+    JohnsonCookDamage degrading = kAl;
+    degrading.cyclicDegradation = 1.0;
+    Point point;
+    for (int k = 0; k < 300; ++k) {
+        point.flow(degrading, 0.001, 10.0, kSigmaEq);
+    }
+    EXPECT_EQ(point.tensionOnset, JohnsonCookDamage::kCompressiveFlow);
+    EXPECT_EQ(point.damage, 0.0);
+    const double compressed = point.plasticStrain;
+    while (point.flow(degrading, 0.001, kTensionP, kSigmaEq) < 1.0) {
+    }
+    EXPECT_TRUE(near("eps_p,0", point.tensionOnset, compressed, 1e-12, 0.0));
+    EXPECT_TRUE(near("tensile eps_p at failure", point.plasticStrain - compressed,
+                     epsF23() * std::exp(-1.0 * compressed), 0.001, 0.0));
+}
+
+// Symmetric cycles with full closure: each tensile half starts from D = 0 at eps_p,0 = 2 k d
+// (cycle k, increment d a half) and ends at D = d / eps_f, so the point fails in the first
+// cycle with d / eps_f >= exp(-lambda 2 k d), k = ceil(ln(eps_f / d) / (2 lambda d)): 169 for
+// d = 0.01, lambda = 1 (the bound is 168.4, far enough from an integer for rounding). Without
+// degradation the cycles never fail.
+TEST(JohnsonCookDamage, DegradedCyclesFailAfterTheClosedFormCount) {
+    JohnsonCookDamage degrading = kAl;
+    degrading.compressionClosure = 1.0;
+    const double d = 0.01;
+    EXPECT_EQ(failingCycle(degrading, 2000, d), -1);
+    degrading.cyclicDegradation = 1.0;
+    const int expected = static_cast<int>(std::ceil(std::log(epsF23() / d) / (2.0 * d)));
+    EXPECT_EQ(expected, 169);
+    EXPECT_EQ(failingCycle(degrading, 2000, d), expected);
 }

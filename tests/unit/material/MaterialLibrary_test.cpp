@@ -234,9 +234,16 @@ TEST(MaterialLibrary, CompressionClosureIsReadAndBounded) {
                                            {"D4", 0.0},
                                            {"D5", 1.6},
                                            {"compression_closure", 0.5},
+                                           {"cyclic_degradation", 0.25},
                                            {"source", "test"}};
     const auto library = MaterialLibrary::fromJson(doc, "doc");
     EXPECT_EQ(std::get<JohnsonCookDamage>(library.get("MyAl").failure).compressionClosure, 0.5);
+    EXPECT_EQ(std::get<JohnsonCookDamage>(library.get("MyAl").failure).cyclicDegradation, 0.25);
+    doc["materials"]["MyAl"]["failure"]["cyclic_degradation"] = -0.1;
+    const std::string negative = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
+    EXPECT_NE(negative.find("doc: /materials/MyAl/failure/cyclic_degradation"), std::string::npos)
+        << negative;
+    doc["materials"]["MyAl"]["failure"]["cyclic_degradation"] = 0.25;
     doc["materials"]["MyAl"]["failure"]["compression_closure"] = 1.5;
     const std::string message = inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "doc"); });
     EXPECT_NE(message.find("doc: /materials/MyAl/failure/compression_closure: must be at most 1, "
