@@ -5,8 +5,8 @@
 // `mass` is the true (3D) mass of the ring a particle stands for in axisymmetric mode
 // (2 pi r rho dA), and the mass per unit depth in planar mode.
 //
-// Strength arrays (stress deviator, plastic strain, damage and its state) are allocated only when
-// some body in the scene has strength: a purely hydrodynamic scene carries none of them.
+// Strength arrays (stress deviator, plastic strain, damage and its state) are allocated only
+// when some body in the scene has strength: a purely hydrodynamic scene carries none of them.
 #pragma once
 
 #include <cstddef>
@@ -17,16 +17,16 @@ namespace hvi::sph {
 
 struct ParticleSet {
     // State.
-    std::vector<double> z, r;   ///< position [mm]
-    std::vector<double> vz, vr; ///< velocity [km/s]
-    std::vector<double> mass;   ///< [mg]
-    std::vector<double> h;      ///< smoothing length [mm]
-    std::vector<double> rho;    ///< density [g/cm^3]
-    std::vector<double> e;      ///< specific internal energy [MJ/kg]
-    std::vector<double> p;      ///< pressure [GPa] (from the EOS)
-    std::vector<double> cs;     ///< sound speed [km/s] (from the EOS, with strength)
-    std::vector<int32_t> body;  ///< index into the scene's body list
-    std::vector<uint8_t> alive; ///< 0 once deleted (runaway, left the domain)
+    std::vector<double> z, r;         ///< position [mm]
+    std::vector<double> vz, vr;       ///< velocity [km/s]
+    std::vector<double> mass;         ///< [mg]
+    std::vector<double> h;            ///< smoothing length [mm]
+    std::vector<double> rho;          ///< density [g/cm^3]
+    std::vector<double> e;            ///< specific internal energy [MJ/kg]
+    std::vector<double> p;            ///< pressure [GPa] (from the EOS)
+    std::vector<double> cs;           ///< sound speed [km/s] (from the EOS, with strength)
+    std::vector<int32_t> body;        ///< index into the scene's body list
+    std::vector<uint8_t> alive;       ///< 0 once deleted (runaway, left the domain)
 
     // Strength (empty when no body has strength).
     std::vector<double> szz, srr, srz; ///< stress deviator in the (z, r) plane [GPa]
@@ -57,12 +57,12 @@ inline bool isUnusedSlot(uint8_t alive, double mass) {
 
 /// Time derivatives of the evolved fields, filled by the physics packages.
 struct ParticleRates {
-    std::vector<double> az, ar;           ///< acceleration [km/s/us]
-    std::vector<double> drho;             ///< [g/cm^3/us]
-    std::vector<double> de;               ///< [MJ/kg/us]
-    std::vector<double> dh;               ///< [mm/us]
+    std::vector<double> az, ar;       ///< acceleration [km/s/us]
+    std::vector<double> drho;         ///< [g/cm^3/us]
+    std::vector<double> de;           ///< [MJ/kg/us]
+    std::vector<double> dh;           ///< [mm/us]
     std::vector<double> dszz, dsrr, dsrz; ///< deviator rate [GPa/us]
-    std::vector<double> strainRate;       ///< equivalent total strain rate [1/us]
+    std::vector<double> strainRate;   ///< equivalent total strain rate [1/us]
     // Corrected velocity gradient and hoop strain rate (for the strength package).
     std::vector<double> dvzDz, dvzDr, dvrDz, dvrDr; ///< [1/us]
     std::vector<double> hoopRate;                   ///< D_thth = v_r / r (regularised) [1/us]
