@@ -49,41 +49,23 @@
 // outruns the search, and every pair that could touch within a step is constrained (no
 // pass-through at any speed). Contacts are found in parallel; the impulses of a step are
 // solved together by projected Gauss-Seidel passes in slave order (each contact's
-// accumulated impulse stays >= 0; KinematicContact.cpp, step 3), so the result does not
-// depend on the thread count.
+// accumulated impulse stays >= 0), so the result does not depend on the thread count.
+// The steps, each in its own file: the master surface (fe/SurfaceTopology), candidates and
+// votes (contact/ContactSearch), constraints (contact/ContactConstraints), impulses
+// (contact/ContactSolver), contact flags and heat (contact/ContactHeat).
 //
 // Units: mm, us, mg (km/s, J).
 #pragma once
 
-#include "contact/Footprint.hpp"
-#include "fe/FeMesh.hpp"
-#include "sph/ParticleSet.hpp"
+#include "contact/ContactPoints.hpp"
+#include "contact/ContactHeat.hpp"
+#include "fe/SurfaceTopology.hpp"
 
 #include <cstdint>
 #include <limits>
 #include <vector>
 
 namespace hvi::contact {
-
-struct ContactOptions {
-    bool axisymmetric = true;
-    /// h / spacing of the particles: a particle's footprint on a surface is h / this wide
-    /// (contact/Footprint.hpp). 0: particles press on a point, as nodes do.
-    double smoothingLengthFactor = 0.0;
-};
-
-/// The particles' half-step state (the leapfrog's v^{n+1/2} and e^{n+1/2} arrays).
-struct ParticleHalfStep {
-    std::vector<double>* vz = nullptr;
-    std::vector<double>* vr = nullptr;
-    std::vector<double>* e = nullptr;
-};
-
-/// What contact needs to know about the bodies (scene body index -> size, discretisation).
-struct ContactBody {
-    bool finiteElement = false;
-    double size = 0.0; ///< particle spacing or element size [mm]
-};
 
 class KinematicContact {
 public:
@@ -105,12 +87,12 @@ public:
     /// approaches a surface).
     double stableTimeStep() const { return m_stableDt; }
     /// Kinetic energy turned into heat at contacts since the start [J].
-    double dissipatedEnergy() const { return m_dissipatedEnergy; }
-    void restoreDissipatedEnergy(double energy) { m_dissipatedEnergy = energy; }
+    double dissipatedEnergy() const { return m_energy.dissipated; }
+    void restoreDissipatedEnergy(double energy) { m_energy.dissipated = energy; }
     /// The part of it that went into free nodes (eroded material, which carries no internal
     /// energy of its own): booked with the eroded energy [J].
-    double freeNodeHeat() const { return m_freeNodeHeat; }
-    void restoreFreeNodeHeat(double energy) { m_freeNodeHeat = energy; }
+    double freeNodeHeat() const { return m_energy.freeNodeHeat; }
+    void restoreFreeNodeHeat(double energy) { m_energy.freeNodeHeat = energy; }
     /// Contacts resolved in the last resolve().
     std::size_t contactCount() const { return m_contactCount; }
     /// Which slaves touched in the last step (particles, then nodes) and the last vote: the
@@ -124,35 +106,21 @@ public:
     /// must advance them even when the SPH evaluation skips them as dormant.
     const std::vector<int32_t>& touchedParticles() const { return m_touchedParticles; }
     /// Master segments (FE surface edges) in use.
-    std::size_t segmentCount() const { return m_segA.size(); }
+    std::size_t segmentCount() const { return m_surface.segmentCount(); }
 
 private:
     void run(sph::ParticleSet& particles, const ParticleHalfStep& half, fe::ElementSet& elements,
              fe::NodeSet& nodes, double dt, bool constrain);
-    void rebuildSegments(const fe::ElementSet& elements, const fe::NodeSet& nodes);
-    void buildEdgeTable(const fe::ElementSet& elements);
+    /// Contact flags of the previous step, per slave of this step.
+    std::vector<uint8_t> previousFlags(const ContactPoints& points) const;
 
     ContactOptions m_options;
     std::vector<ContactBody> m_bodies;
-    // Master segments: nodes A -> B with the element interior on the left.
-    std::vector<int32_t> m_segA, m_segB, m_segBody, m_segElement;
-    // The surface chains: the segment starting where each ends, ending where each starts.
-    std::vector<int32_t> m_segNext, m_segPrev;
-    // The mesh's edges (CSR by node pair, ascending): the elements using each, and at which
-    // corner the edge starts (corner -> corner + 1).
-    std::vector<int32_t> m_edgeOffset, m_edgeElement;
-    std::vector<uint8_t> m_edgeCorner;
-    std::size_t m_edgeTableElements = std::numeric_limits<std::size_t>::max();
-    /// The alive elements of each node: m_nodeElements[m_nodeElementOffset[n] ...
-    /// m_nodeElementOffset[n + 1]) (none: a free node).
-    std::vector<int32_t> m_nodeElementOffset, m_nodeElements;
-    std::vector<uint8_t> m_surfaceNode; ///< node lies on a master segment of its own body
-    std::vector<uint8_t> m_inContact;   ///< per particle, then per node: in contact last step
+    fe::SurfaceTopology m_surface;    ///< master segments, node-element lists
+    std::vector<uint8_t> m_inContact; ///< per particle, then per node: in contact last step
     std::vector<int32_t> m_touchedParticles;
-    std::size_t m_aliveElementsAtBuild = std::numeric_limits<std::size_t>::max();
     double m_stableDt = std::numeric_limits<double>::infinity();
-    double m_dissipatedEnergy = 0.0;
-    double m_freeNodeHeat = 0.0;
+    ContactEnergy m_energy;
     std::size_t m_contactCount = 0;
 };
 

@@ -9,12 +9,9 @@ namespace hvi::fe {
 
 void ElementSet::enableStrength() {
     m_withStrength = true;
-    szz.assign(size(), 0.0);
-    srr.assign(size(), 0.0);
-    srz.assign(size(), 0.0);
-    plasticStrain.assign(size(), 0.0);
-    damage.assign(size(), 0.0);
-    tensionOnset.assign(size(), 0.0);
+    for (const auto& f : kElementStrengthFields) {
+        (this->*f.member).assign(size(), 0.0);
+    }
 }
 
 BodyMesh meshBody(const scene::Body& body, int32_t bodyIndex, double rho0, double e0,
@@ -91,12 +88,9 @@ BodyMesh meshBody(const scene::Body& body, int32_t bodyIndex, double rho0, doubl
             elements.q.push_back(0.0);
             elements.geometricStrain.push_back(0.0);
             if (strength) {
-                elements.szz.push_back(0.0);
-                elements.srr.push_back(0.0);
-                elements.srz.push_back(0.0);
-                elements.plasticStrain.push_back(0.0);
-                elements.damage.push_back(0.0);
-                elements.tensionOnset.push_back(0.0);
+                for (const auto& f : kElementStrengthFields) {
+                    (elements.*f.member).push_back(0.0);
+                }
             }
         }
     }

@@ -12,6 +12,7 @@
 // GPa, g/cm^3, MJ/kg); see docs/conventions.md.
 #pragma once
 
+#include "core/FieldList.hpp"
 #include "scene/Scene.hpp"
 
 #include <array>
@@ -58,6 +59,33 @@ struct ElementSet {
 private:
     bool m_withStrength = false;
 };
+
+/// The nodes' evolved state (alive is an integer field), by checkpoint name ("node_" +).
+inline constexpr std::array<Field<NodeSet>, 7> kNodeStateFields{{
+    {"z", &NodeSet::z},
+    {"r", &NodeSet::r},
+    {"vz", &NodeSet::vz},
+    {"vr", &NodeSet::vr},
+    {"fz", &NodeSet::fz},
+    {"fr", &NodeSet::fr},
+    {"mass", &NodeSet::mass}, // eroded elements turned into particles take theirs
+}};
+/// The elements' evolved state without strength, by checkpoint name ("element_" +).
+inline constexpr std::array<Field<ElementSet>, 4> kElementStateFields{{
+    {"rho", &ElementSet::rho},
+    {"e", &ElementSet::e},
+    {"q", &ElementSet::q},
+    {"geometric_strain", &ElementSet::geometricStrain},
+}};
+/// The strength state (allocated only with strength), by checkpoint name ("element_" +).
+inline constexpr std::array<Field<ElementSet>, 6> kElementStrengthFields{{
+    {"szz", &ElementSet::szz},
+    {"srr", &ElementSet::srr},
+    {"srz", &ElementSet::srz},
+    {"plastic_strain", &ElementSet::plasticStrain},
+    {"damage", &ElementSet::damage},
+    {"tension_onset", &ElementSet::tensionOnset},
+}};
 
 /// The index ranges one body occupies.
 struct BodyMesh {

@@ -399,6 +399,7 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
 void FeSolid::erode(std::size_t i) {
     auto& el = m_elements;
     el.alive[i] = 0;
+    el.p[i] = 0.0; // as a restored run has it (pressure is not checkpointed; dead points get none)
     m_erode[i] = 0;
     if (!m_options.erodedBecomeParticles) {
         m_erodedEnergy += el.mass[i] * el.e[i];

@@ -402,6 +402,22 @@ inline FeFieldsView viewOf(const FeFields& data) {
     return FeFieldsView{viewOf(data.nodes), viewOf(data.elements)};
 }
 
+/// Row k of a history read back (to write it again).
+inline HistoryRow rowOf(const HistoryColumns& history, std::size_t k) {
+    HistoryRow row{};
+    const auto& from = FieldTable<HistoryColumns>::entries;
+    const auto& to = FieldTable<HistoryRow>::entries;
+    for (std::size_t i = 0; i < from.size(); ++i) {
+        std::visit(
+            [&](auto source) {
+                using T = typename std::remove_cvref_t<decltype(history.*source)>::value_type;
+                row.*std::get<T HistoryRow::*>(to[i].member) = (history.*source)[k];
+            },
+            from[i].member);
+    }
+    return row;
+}
+
 // ---- compile-time checks: every member in its table exactly once, names unique ------------
 
 template <class Table>

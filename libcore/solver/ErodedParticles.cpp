@@ -105,13 +105,10 @@ std::vector<int32_t> ErodedParticles::convert(const std::vector<int32_t>& eroded
         particles.rho[i] = rho;
         particles.e[i] = elements.e[e] * elements.mass[e] / mass + averagedOut / mass;
         particles.alive[i] = 1;
-        if (strength) {
-            particles.szz[i] = elements.szz[e];
-            particles.srr[i] = elements.srr[e];
-            particles.srz[i] = elements.srz[e];
-            particles.plasticStrain[i] = elements.plasticStrain[e];
-            particles.damage[i] = elements.damage[e];
-            particles.tensionOnset[i] = elements.tensionOnset[e];
+        static_assert(sameNames(sph::kParticleStrengthFields, fe::kElementStrengthFields));
+        for (std::size_t f = 0; f < fe::kElementStrengthFields.size() && strength; ++f) {
+            (particles.*sph::kParticleStrengthFields[f].member)[i] =
+                (elements.*fe::kElementStrengthFields[f].member)[e];
         }
         created.push_back(slot);
     }

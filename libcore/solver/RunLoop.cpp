@@ -112,6 +112,34 @@ std::string formatDuration(double seconds) {
     return buf;
 }
 
+/// A checkpoint array per listed field, named prefix + the field's name.
+template <class Set, std::size_t N>
+void putFields(io::CheckpointState& s, std::string_view prefix, const Set& set,
+               const std::array<Field<Set>, N>& fields) {
+    for (const auto& f : fields) {
+        s.doubles[std::string(prefix) + std::string(f.name)] = set.*f.member;
+    }
+}
+
+/// The listed fields back from a checkpoint; a missing array or one of another size is an
+/// input error.
+void takeArray(const io::CheckpointState& s, const std::string& name, std::vector<double>& into) {
+    auto it = s.doubles.find(name);
+    if (it == s.doubles.end() || it->second.size() != into.size()) {
+        throw InputError("<checkpoint>", "/" + name, "missing or wrong size",
+                         "a checkpoint written by this version of hvi-run");
+    }
+    into = it->second;
+}
+
+template <class Set, std::size_t N>
+void takeFields(const io::CheckpointState& s, std::string_view prefix, Set& set,
+                const std::array<Field<Set>, N>& fields) {
+    for (const auto& f : fields) {
+        takeArray(s, std::string(prefix) + std::string(f.name), set.*f.member);
+    }
+}
+
 } // namespace
 
 io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
@@ -119,58 +147,32 @@ io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
     io::CheckpointState s;
     s.timeUs = sim.time();
     s.step = sim.step();
-    s.doubles = {{"z", ps.z},       {"r", ps.r}, {"vz", ps.vz},   {"vr", ps.vr},
-                 {"mass", ps.mass}, {"h", ps.h}, {"rho", ps.rho}, {"e", ps.e}};
+    putFields(s, "", ps, sph::kParticleStateFields);
     if (ps.hasStrength()) {
-        s.doubles["szz"] = ps.szz;
-        s.doubles["srr"] = ps.srr;
-        s.doubles["srz"] = ps.srz;
-        s.doubles["plastic_strain"] = ps.plasticStrain;
-        s.doubles["damage"] = ps.damage;
-        s.doubles["tension_onset"] = ps.tensionOnset;
+        putFields(s, "", ps, sph::kParticleStrengthFields);
     }
     s.ints["body"] = ps.body;
     s.ints["alive"] = std::vector<int32_t>(ps.alive.begin(), ps.alive.end());
     // The rates of the last step: the next step's first kick uses them, and they belong to
     // the step's predicted state, so they cannot be recomputed from the final one.
     const auto& rt = sim.rates();
-    s.doubles["rate_az"] = rt.az;
-    s.doubles["rate_ar"] = rt.ar;
-    s.doubles["rate_drho"] = rt.drho;
-    s.doubles["rate_de"] = rt.de;
-    s.doubles["rate_dh"] = rt.dh;
+    putFields(s, "rate_", rt, sph::kRateFields);
     if (ps.hasStrength()) {
-        s.doubles["rate_dszz"] = rt.dszz;
-        s.doubles["rate_dsrr"] = rt.dsrr;
-        s.doubles["rate_dsrz"] = rt.dsrz;
+        putFields(s, "rate_", rt, sph::kStrengthRateFields);
     }
     if (const fe::FeSolid* fe = sim.finiteElements()) {
         const auto& nd = fe->nodes();
         const auto& el = fe->elements();
-        s.doubles["node_z"] = nd.z;
-        s.doubles["node_r"] = nd.r;
-        s.doubles["node_vz"] = nd.vz;
-        s.doubles["node_vr"] = nd.vr;
-        s.doubles["node_fz"] = nd.fz;
-        s.doubles["node_fr"] = nd.fr;
-        s.doubles["node_mass"] = nd.mass; // eroded elements turned into particles take theirs
+        putFields(s, "node_", nd, fe::kNodeStateFields);
         s.ints["node_alive"] = std::vector<int32_t>(nd.alive.begin(), nd.alive.end());
-        s.doubles["element_rho"] = el.rho;
-        s.doubles["element_e"] = el.e;
-        s.doubles["element_q"] = el.q;
-        s.doubles["element_geometric_strain"] = el.geometricStrain;
+        putFields(s, "element_", el, fe::kElementStateFields);
         s.doubles["element_volumetric_rate"] = fe->volumetricRate();
         s.doubles["element_hourglass_rate"] = fe->hourglassRate();
         const auto& flags = sim.contact()->contactFlags();
         s.ints["contact_flags"] = std::vector<int32_t>(flags.begin(), flags.end());
         s.ints["element_alive"] = std::vector<int32_t>(el.alive.begin(), el.alive.end());
         if (el.hasStrength()) {
-            s.doubles["element_szz"] = el.szz;
-            s.doubles["element_srr"] = el.srr;
-            s.doubles["element_srz"] = el.srz;
-            s.doubles["element_plastic_strain"] = el.plasticStrain;
-            s.doubles["element_damage"] = el.damage;
-            s.doubles["element_tension_onset"] = el.tensionOnset;
+            putFields(s, "element_", el, fe::kElementStrengthFields);
         }
     }
     const Totals t = sim.totals();
@@ -213,29 +215,9 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
                              " particles, the scene makes " + std::to_string(ps.size()),
                          "a checkpoint of the same scene and resolution");
     }
-    auto take = [&](const char* name, std::vector<double>& into) {
-        auto it = s.doubles.find(name);
-        if (it == s.doubles.end() || it->second.size() != into.size()) {
-            throw InputError("<checkpoint>", std::string("/") + name, "missing or wrong size",
-                             "a checkpoint written by this version of hvi-run");
-        }
-        into = it->second;
-    };
-    take("z", ps.z);
-    take("r", ps.r);
-    take("vz", ps.vz);
-    take("vr", ps.vr);
-    take("mass", ps.mass);
-    take("h", ps.h);
-    take("rho", ps.rho);
-    take("e", ps.e);
+    takeFields(s, "", ps, sph::kParticleStateFields);
     if (ps.hasStrength()) {
-        take("szz", ps.szz);
-        take("srr", ps.srr);
-        take("srz", ps.srz);
-        take("plastic_strain", ps.plasticStrain);
-        take("damage", ps.damage);
-        take("tension_onset", ps.tensionOnset);
+        takeFields(s, "", ps, sph::kParticleStrengthFields);
     }
     auto takeFlags = [&](const char* name, std::vector<uint8_t>& into) {
         auto it = s.ints.find(name);
@@ -259,28 +241,14 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
                              "the checkpoint's FE mesh differs from the scene's",
                              "a checkpoint of the same scene and resolution");
         }
-        take("node_z", nd.z);
-        take("node_r", nd.r);
-        take("node_vz", nd.vz);
-        take("node_vr", nd.vr);
-        take("node_fz", nd.fz);
-        take("node_fr", nd.fr);
-        take("node_mass", nd.mass);
+        takeFields(s, "node_", nd, fe::kNodeStateFields);
         takeFlags("node_alive", nd.alive);
-        take("element_rho", el.rho);
-        take("element_e", el.e);
-        take("element_q", el.q);
-        take("element_geometric_strain", el.geometricStrain);
-        take("element_volumetric_rate", fe->volumetricRate());
-        take("element_hourglass_rate", fe->hourglassRate());
+        takeFields(s, "element_", el, fe::kElementStateFields);
+        takeArray(s, "element_volumetric_rate", fe->volumetricRate());
+        takeArray(s, "element_hourglass_rate", fe->hourglassRate());
         takeFlags("element_alive", el.alive);
         if (el.hasStrength()) {
-            take("element_szz", el.szz);
-            take("element_srr", el.srr);
-            take("element_srz", el.srz);
-            take("element_plastic_strain", el.plasticStrain);
-            take("element_damage", el.damage);
-            take("element_tension_onset", el.tensionOnset);
+            takeFields(s, "element_", el, fe::kElementStrengthFields);
         }
         erodedEnergy = s.extra.value("eroded_energy_J", 0.0);
         erodedCount = s.extra.value("eroded_elements", std::size_t{0});
@@ -290,15 +258,9 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
                      s.extra.at("deleted_momentum_z"), s.extra.at("runaway_deleted"),
                      s.extra.at("out_of_domain_deleted"), erodedEnergy, erodedCount);
     auto& rt = sim.rates();
-    take("rate_az", rt.az);
-    take("rate_ar", rt.ar);
-    take("rate_drho", rt.drho);
-    take("rate_de", rt.de);
-    take("rate_dh", rt.dh);
+    takeFields(s, "rate_", rt, sph::kRateFields);
     if (ps.hasStrength()) {
-        take("rate_dszz", rt.dszz);
-        take("rate_dsrr", rt.dsrr);
-        take("rate_dsrz", rt.dsrz);
+        takeFields(s, "rate_", rt, sph::kStrengthRateFields);
     }
     // +inf (nothing to limit) goes through JSON as null.
     auto dtOf = [&](const char* key) {
@@ -367,21 +329,7 @@ void carryOver(const std::filesystem::path& previousFile, const OutputSchedule& 
     }
     const io::HistoryColumns h = previous.readHistory();
     for (std::size_t k = 0; k < std::min(schedule.historyRows, h.timeUs.size()); ++k) {
-        io::HistoryRow row;
-        row.timeUs = h.timeUs[k];
-        row.dtUs = h.dtUs[k];
-        row.step = h.step[k];
-        row.kineticEnergy = h.kineticEnergy[k];
-        row.internalEnergy = h.internalEnergy[k];
-        row.totalEnergy = h.totalEnergy[k];
-        row.energyError = h.energyError[k];
-        row.deletedEnergy = h.deletedEnergy[k];
-        row.mass = h.mass[k];
-        row.momentumZ = h.momentumZ[k];
-        row.aliveCount = h.aliveCount[k];
-        row.deletedCount = h.deletedCount[k];
-        row.activeCount = h.activeCount[k];
-        writer.appendHistory(row);
+        writer.appendHistory(io::rowOf(h, k));
     }
 }
 

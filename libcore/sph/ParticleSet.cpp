@@ -21,24 +21,17 @@ void ParticleSet::add(double zMm, double rMm, double vzKmS, double vrKmS, double
     body.push_back(bodyIndex);
     alive.push_back(1);
     if (hasStrength()) {
-        szz.push_back(0.0);
-        srr.push_back(0.0);
-        srz.push_back(0.0);
-        plasticStrain.push_back(0.0);
-        damage.push_back(0.0);
-        tensionOnset.push_back(0.0);
+        for (const auto& f : kParticleStrengthFields) {
+            (this->*f.member).push_back(0.0);
+        }
     }
 }
 
 void ParticleSet::enableStrength() {
     m_withStrength = true;
-    const std::size_t n = size();
-    szz.assign(n, 0.0);
-    srr.assign(n, 0.0);
-    srz.assign(n, 0.0);
-    plasticStrain.assign(n, 0.0);
-    damage.assign(n, 0.0);
-    tensionOnset.assign(n, 0.0);
+    for (const auto& f : kParticleStrengthFields) {
+        (this->*f.member).assign(size(), 0.0);
+    }
 }
 
 void ParticleRates::resize(std::size_t n, bool withStrength) {

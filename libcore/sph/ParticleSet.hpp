@@ -9,6 +9,9 @@
 // when some body in the scene has strength: a purely hydrodynamic scene carries none of them.
 #pragma once
 
+#include "core/FieldList.hpp"
+
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -48,6 +51,29 @@ private:
     bool m_withStrength = false;
 };
 
+/// The evolved state every particle carries (p and cs follow from it; body and alive are
+/// integer fields), by checkpoint name.
+inline constexpr std::array<Field<ParticleSet>, 8> kParticleStateFields{{
+    {"z", &ParticleSet::z},
+    {"r", &ParticleSet::r},
+    {"vz", &ParticleSet::vz},
+    {"vr", &ParticleSet::vr},
+    {"mass", &ParticleSet::mass},
+    {"h", &ParticleSet::h},
+    {"rho", &ParticleSet::rho},
+    {"e", &ParticleSet::e},
+}};
+/// The strength state (allocated only when some body has strength); the same names, in the
+/// same order, as fe::kElementStrengthFields, which an eroded element hands to its particle.
+inline constexpr std::array<Field<ParticleSet>, 6> kParticleStrengthFields{{
+    {"szz", &ParticleSet::szz},
+    {"srr", &ParticleSet::srr},
+    {"srz", &ParticleSet::srz},
+    {"plastic_strain", &ParticleSet::plasticStrain},
+    {"damage", &ParticleSet::damage},
+    {"tension_onset", &ParticleSet::tensionOnset},
+}};
+
 /// A particle slot that holds no material: one held in reserve for an FE element that has not
 /// eroded yet (solver/ErodedParticles.hpp). Not alive and massless; a deleted particle keeps
 /// its mass. The one definition for the solver, the run file and hvi-assess.
@@ -72,5 +98,20 @@ struct ParticleRates {
     /// Zeroes the rates of the listed particles only (the others are known to be zero).
     void zero(const std::vector<int32_t>& items);
 };
+
+/// The rates a checkpoint carries (the next step's first kick uses them), by checkpoint
+/// name; the second list only with strength.
+inline constexpr std::array<Field<ParticleRates>, 5> kRateFields{{
+    {"az", &ParticleRates::az},
+    {"ar", &ParticleRates::ar},
+    {"drho", &ParticleRates::drho},
+    {"de", &ParticleRates::de},
+    {"dh", &ParticleRates::dh},
+}};
+inline constexpr std::array<Field<ParticleRates>, 3> kStrengthRateFields{{
+    {"dszz", &ParticleRates::dszz},
+    {"dsrr", &ParticleRates::dsrr},
+    {"dsrz", &ParticleRates::dsrz},
+}};
 
 } // namespace hvi::sph

@@ -260,7 +260,7 @@ TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
 // axis node pressing back on the flyer's) it is not booked as a new collision. It was, and
 // the target's axis element had 0.220 MJ/kg against 0.104 beside it at 0.011 us (2.1 times;
 // the flyer's 0.215 against 0.101). Each side's heat goes to the elements around its nodes
-// by mass (contact/KinematicContact.cpp).
+// by mass (contact/ContactHeat.hpp).
 TEST(FeContact, UniformFeBlowHeatsTheFrontRowsAlike) {
     solver::Simulation sim(uniformImpactScene(false),
                            solver::sceneLibrary(json::object(), "<test>"));
