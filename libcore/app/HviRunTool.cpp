@@ -8,8 +8,8 @@
 #include "scene/BodyLayout.hpp"
 #include "scene/PointBudget.hpp"
 #include "scene/Scene.hpp"
+#include "scene/SceneLibrary.hpp"
 #include "solver/RunLoop.hpp"
-#include "solver/SceneLibrary.hpp"
 
 #include <chrono>
 #include <csignal>
@@ -104,7 +104,8 @@ void HviRunTool::addOptions(CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     app.add_flag("--benchmark", m_benchmark,
                  "Measure particle-steps per second on the built-in bumper case (3.125 mm Al "
-                 "sphere at 6.847 km/s on 0.8 mm Al; spacing --resolution-mm, default 0.015)");
+                 "sphere at 6.847 km/s on 0.8 mm Al; spacing --resolution-mm, default " +
+                     scene::defaultText(scene::kDefaultParticleSpacingMm) + ")");
     app.add_option("--benchmark-steps", m_benchmarkSteps, "Steps timed by --benchmark")
         ->check(CLI::Range(1L, 100000000L));
     app.add_option("--benchmark-scene", m_benchmarkScene,
@@ -114,8 +115,8 @@ void HviRunTool::addOptions(CLI::App& app) {
 }
 
 void HviRunTool::benchmark() {
-    const double spacing = m_resolution > 0.0 ? m_resolution : 0.015;
-    const auto library = solver::sceneLibrary(json::object(), "<builtin>");
+    const double spacing = m_resolution > 0.0 ? m_resolution : scene::kDefaultParticleSpacingMm;
+    const auto library = scene::sceneLibrary(json::object(), "<builtin>");
     // Two scenes: the all-SPH bumper case, and the same with the bumper as finite elements
     // (the element throughput; FE time only, contact reported apart).
     for (const bool feBumper : {false, true}) {
@@ -203,7 +204,7 @@ void HviRunTool::execute() {
         omp_set_num_threads(m_threads);
     }
     if (m_listMaterials) {
-        for (const auto& name : solver::sceneLibrary(json::object(), "<builtin>").names()) {
+        for (const auto& name : scene::sceneLibrary(json::object(), "<builtin>").names()) {
             std::cout << name << "\n";
         }
         return;
@@ -251,7 +252,7 @@ void HviRunTool::execute() {
     }
     io::requireFiniteNumbers(doc, m_scene);
     io::validateAgainstSchema(doc, "scene", m_scene);
-    auto library = solver::sceneLibrary(doc.value("materials", json::object()), m_scene);
+    auto library = scene::sceneLibrary(doc.value("materials", json::object()), m_scene);
     if (!m_materials.empty()) {
         library.merge(material::MaterialLibrary::fromFile(m_materials));
     }

@@ -4,6 +4,7 @@
 #include "geometry/InputChecks.hpp"
 #include "io/AtomicOutput.hpp"
 #include "io/JsonInput.hpp"
+#include "scene/Defaults.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -44,11 +45,11 @@ void addSharedSceneFlags(CLI::App& app, FlagOverlay& flags) {
     flags.addString(app, "--rear-facesheet-material", "/panel/rear_facesheet_material",
                     "Rear facesheet (rear wall) material (default: --material)");
     flags.addNumber(app, "--particle-spacing-mm", "/numerics/particle_spacing_mm",
-                    "SPH particle spacing and FE element size [mm], > 0 (default: the calibrated "
-                    "0.015)");
+                    "SPH particle spacing and FE element size [mm], > 0 (default: the calibrated " +
+                        scene::defaultText(scene::kDefaultParticleSpacingMm) + ")");
     flags.addNumber(app, "--erosion-factor", "/numerics/erosion_factor",
-                    "FE erosion threshold on geometric strain [-], > 0 (default: the calibrated "
-                    "1.5)");
+                    "FE erosion threshold on geometric strain [-], > 0 (default: the calibrated " +
+                        scene::defaultText(scene::kDefaultErosionFactor) + ")");
     flags.addString(app, "--core-discretization", "/numerics/core_discretization",
                     "Core bodies as fe (default) or sph; sph (the rear wall follows) gives an "
                     "all-SPH scene, which is what hvi-run can run until its FE solver lands",

@@ -1,6 +1,6 @@
 #include "assess/ShieldLayout.hpp"
 
-#include "solver/SceneLibrary.hpp"
+#include "scene/SceneLibrary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -126,7 +126,7 @@ scene::Scene sceneOfRun(const io::RunFileReader& reader) {
                 }
             }
         }
-        const auto library = solver::sceneLibrary(materials, label);
+        const auto library = scene::sceneLibrary(materials, label);
         return scene::parseScene(doc, label, library.names());
     } catch (const InputError& e) {
         // The scene is a dataset of the run file: point into it.

@@ -1,5 +1,5 @@
 // Per-element rates of one finite-element update, in the field names the material pipeline
-// (solver::MaterialPackage) shares with sph::ParticleRates. Units: 1/us, GPa/us.
+// (material::MaterialPackage) shares with sph::ParticleRates. Units: 1/us, GPa/us.
 #pragma once
 
 #include <cstddef>

@@ -4,7 +4,7 @@
 //
 // The element state uses the same field names as sph::ParticleSet (rho, e, p, cs, szz, srr,
 // srz, plasticStrain, damage, body, alive), so the one material pipeline
-// (solver::MaterialPackage) runs over elements and particles alike.
+// (material::MaterialPackage) runs over elements and particles alike.
 //
 // Mass: an element carries the true (3D) mass of the ring it sweeps, 2 pi rho0 integral(r dA)
 // (axisymmetric) or rho0 A per unit depth (planar), lumped a quarter to each corner node

@@ -197,7 +197,7 @@ void FeSolid::gatherNodesOf(std::size_t element) {
     }
 }
 
-void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
+void FeSolid::update(double dt, const material::MaterialPackage& materials) {
     selectEvaluated();
     m_erodedNow.clear();
     // Every element is updated independently, so the evaluated list is cut into tiles that each
@@ -229,7 +229,7 @@ void FeSolid::update(double dt, const solver::MaterialPackage& materials) {
 }
 
 void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
-                         const solver::MaterialPackage& materials, StepVote& vote) {
+                         const material::MaterialPackage& materials, StepVote& vote) {
     auto& el = m_elements;
     const auto& nd = m_nodes;
     const bool axi = m_options.axisymmetric;
@@ -301,7 +301,7 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
             el.geometricStrain[i] += dt * rate;
             strained = el.geometricStrain[i] > m_erosionFactor[body];
         }
-        // Crushed past its equation of state's range (solver::densityCeiling, 2.25 rho0 for
+        // Crushed past its equation of state's range (material::densityCeiling, 2.25 rho0 for
         // Al 6061-T6, where no shock state of these impacts reaches): a collapsing element,
         // which the geometric strain misses when its distortion is an hourglass mode (the
         // one-point deformation gradient does not see it). Its Mie-Grueneisen pressure there
@@ -412,7 +412,7 @@ void FeSolid::erode(std::size_t i) {
     }
 }
 
-void FeSolid::computeForces(const solver::MaterialPackage& materials) {
+void FeSolid::computeForces(const material::MaterialPackage& materials) {
     materials.updatePressure(m_elements);
     // The time step of an undisturbed element (the floor for every dormant element, which
     // does not vote while skipped).

@@ -1,6 +1,6 @@
 // The Lagrange finite-element package: 4-node quadrilaterals with one-point integration,
 // viscous hourglass control, artificial bulk viscosity and erosion, sharing the material
-// pipeline (solver::MaterialPackage) with the SPH particles.
+// pipeline (material::MaterialPackage) with the SPH particles.
 //
 // One update, inside the time loop's kick-drift-kick step (central difference, Hallquist,
 // LS-DYNA Theory Manual section 2): the nodes have drifted to x^{n+1} with the half-step
@@ -10,7 +10,7 @@
 //   2. density from the exact swept volume, rho = m / V (as rho0 V0 / V), V = 2 pi integral(r dA)
 //   (mass is
 //      conserved per element by construction);
-//   3. deviator: Jaumann rate, radial return and Johnson-Cook damage (MaterialPackage);
+//   3. deviator: Jaumann rate, radial return and Johnson-Cook damage (material::MaterialPackage);
 //   4. energy: e^{n+1} = e^n - (p-bar + q) dV/m + dt S-bar:D V-bar/m, with p-bar the mean of
 //      the start and a predicted end pressure (one predictor pass of the EOS), so the
 //      pressure work is second-order accurate;
@@ -53,7 +53,7 @@
 #include "fe/ElementRates.hpp"
 #include "fe/ErosionStrain.hpp"
 #include "fe/FeMesh.hpp"
-#include "solver/MaterialPackage.hpp"
+#include "material/MaterialPackage.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -87,10 +87,10 @@ public:
 
     /// Advances the element state over dt [us] with the nodes at x^{n+1} carrying v^{n+1/2},
     /// erodes, and leaves the internal + hourglass force of every node in nodes().fz/fr.
-    void update(double dt, const solver::MaterialPackage& materials);
+    void update(double dt, const material::MaterialPackage& materials);
 
     /// Forces at the current state without advancing anything (start of a run, resume).
-    void computeForces(const solver::MaterialPackage& materials);
+    void computeForces(const material::MaterialPackage& materials);
 
     /// Stable time step of the last update, before the Courant factor [us] (+inf: no element).
     double stableTimeStep() const { return m_stableDt; }
@@ -154,7 +154,7 @@ private:
     void gatherNodesOf(std::size_t element);
     /// Steps 1-4 and 6 of update() for the listed elements (ascending).
     void updateTile(std::span<const int32_t> tile, double dt,
-                    const solver::MaterialPackage& materials, StepVote& vote);
+                    const material::MaterialPackage& materials, StepVote& vote);
     /// Element forces at the current geometry and state, gathered per node; the time-step vote.
     void assembleForces();
     /// Element i's corner forces (zeros when it is eroded or about to be) and its vote.

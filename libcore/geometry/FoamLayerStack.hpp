@@ -68,6 +68,7 @@
 
 #include "geometry/GeometryWarning.hpp"
 #include "geometry/InputChecks.hpp"
+#include "scene/Defaults.hpp"
 
 #include <optional>
 #include <string>
@@ -102,7 +103,7 @@ struct FoamCoreSpec {
     double segmentStaggerFraction = 0.5;              ///< segment_stagger_fraction, [0, 1)
     /// particle_spacing_mm: SPH resolution the warnings are judged against; default the
     /// thesis' calibrated 2D particle size (thesis_cases.json calibration).
-    double particleSpacingMm = 0.015;
+    double particleSpacingMm = scene::kDefaultParticleSpacingMm;
 };
 
 /// One solid body of the reduced core: a full disk (inner radius 0) or one annular segment.

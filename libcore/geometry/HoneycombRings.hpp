@@ -69,6 +69,7 @@
 
 #include "geometry/GeometryWarning.hpp"
 #include "geometry/InputChecks.hpp"
+#include "scene/Defaults.hpp"
 
 #include <optional>
 #include <string>
@@ -107,7 +108,7 @@ struct HoneycombCoreSpec {
     double ringAngleDeg = kMissing;                   ///< ring_angle_deg (Custom only), from +x
     /// particle_spacing_mm: SPH resolution the warnings are judged against; default the
     /// thesis' calibrated 2D particle size (thesis_cases.json calibration).
-    double particleSpacingMm = 0.015;
+    double particleSpacingMm = scene::kDefaultParticleSpacingMm;
 };
 
 /// One ring: an annulus of height H around the impact axis.

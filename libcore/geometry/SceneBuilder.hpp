@@ -54,6 +54,7 @@
 #include "geometry/GeometryWarning.hpp"
 #include "geometry/GmshMesher.hpp"
 #include "geometry/InputChecks.hpp"
+#include "scene/Defaults.hpp"
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -91,8 +92,8 @@ struct PanelFrame {
 
 /// Numerical choices; NaN (kMissing) domain radius or end time means "use the rule".
 struct SceneNumerics {
-    double particleSpacingMm = 0.015; ///< source study's calibrated 2D SPH particle size
-    double erosionFactor = 1.5;       ///< source study's calibrated FE erosion factor
+    double particleSpacingMm = scene::kDefaultParticleSpacingMm;
+    double erosionFactor = scene::kDefaultErosionFactor;
     Discretization coreDiscretization = Discretization::Fe;
     Discretization rearWallDiscretization = Discretization::Fe;
     double domainRadiusMm = kMissing;

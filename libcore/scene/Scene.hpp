@@ -8,6 +8,7 @@
 #pragma once
 
 #include "core/Error.hpp"
+#include "scene/Defaults.hpp"
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -50,7 +51,7 @@ struct Body {
 };
 
 struct SphControls {
-    double particleSpacing = 0.015;
+    double particleSpacing = kDefaultParticleSpacingMm;
     std::string kernel = "cubic_spline";
     double smoothingLengthFactor = 1.3;
     double avAlpha = 1.0, avBeta = 2.0;
@@ -61,7 +62,7 @@ struct SphControls {
 
 struct FeControls {
     double elementSize = 0.0;
-    double erosionFactor = 1.5;
+    double erosionFactor = kDefaultErosionFactor;
     double hourglassCoefficient = 0.1;
     double bulkViscosityLinear = 0.06, bulkViscosityQuadratic = 1.5;
     /// Eroded elements become SPH particles (true) or leave free nodes (false).

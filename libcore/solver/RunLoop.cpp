@@ -230,8 +230,7 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
         }
     };
     takeFlags("alive", ps.alive);
-    double erodedEnergy = 0.0;
-    std::size_t erodedCount = 0;
+    Simulation::ErosionAccount erosion;
     if (fe::FeSolid* fe = sim.finiteElements()) {
         auto& nd = fe->nodes();
         auto& el = fe->elements();
@@ -250,13 +249,17 @@ void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
         if (el.hasStrength()) {
             takeFields(s, "element_", el, fe::kElementStrengthFields);
         }
-        erodedEnergy = s.extra.value("eroded_energy_J", 0.0);
-        erodedCount = s.extra.value("eroded_elements", std::size_t{0});
+        erosion.energy = s.extra.value("eroded_energy_J", 0.0);
+        erosion.count = s.extra.value("eroded_elements", std::size_t{0});
     }
-    sim.restoreClock(s.timeUs, s.step, s.extra.at("dt_us"), s.extra.at("initial_energy_J"),
-                     s.extra.at("deleted_energy_J"), s.extra.at("deleted_mass_mg"),
-                     s.extra.at("deleted_momentum_z"), s.extra.at("runaway_deleted"),
-                     s.extra.at("out_of_domain_deleted"), erodedEnergy, erodedCount);
+    Ledger::Account account;
+    account.initialEnergy = s.extra.at("initial_energy_J");
+    account.deletedEnergy = s.extra.at("deleted_energy_J");
+    account.deletedMass = s.extra.at("deleted_mass_mg");
+    account.deletedMomentumZ = s.extra.at("deleted_momentum_z");
+    account.runaway = s.extra.at("runaway_deleted");
+    account.outOfDomain = s.extra.at("out_of_domain_deleted");
+    sim.restoreClock({s.timeUs, s.step, s.extra.at("dt_us")}, account, erosion);
     auto& rt = sim.rates();
     takeFields(s, "rate_", rt, sph::kRateFields);
     if (ps.hasStrength()) {
@@ -372,6 +375,97 @@ std::string limiterOf(const Simulation& sim) {
     return limiter;
 }
 
+/// Restores `sim` from its checkpoint and carries the interrupted run's snapshots and history
+/// into `writer`; returns the output schedule to go on with.
+OutputSchedule resumeFrom(const std::filesystem::path& checkpointPath,
+                          const std::string& fingerprint, const std::filesystem::path& runFile,
+                          Simulation& sim, RunSummary& summary, io::RunFileWriter& writer,
+                          const std::function<void(const std::string&)>& log) {
+    OutputSchedule schedule;
+    const io::CheckpointState state = io::readCheckpoint(checkpointPath);
+    // A checkpoint of another scene with the same point count would restore without a
+    // word, and the run file's /scene would describe a run it did not come from.
+    if (state.extra.contains("scene_fingerprint") &&
+        state.extra["scene_fingerprint"] != fingerprint) {
+        throw InputError(checkpointPath.string(), "/extra/scene_fingerprint",
+                         "the checkpoint was written by a run of another scene or material "
+                         "library (fingerprint " +
+                             state.extra["scene_fingerprint"].get<std::string>() + ", this run's " +
+                             fingerprint + ")",
+                         "--resume with the scene and --materials of the interrupted run, "
+                         "or delete the checkpoint to start afresh");
+    }
+    restoreCheckpoint(sim, state);
+    summary.maxEnergyError = state.extra.value("max_energy_error", 0.0);
+    if (state.extra.contains("min_dt")) {
+        summary.minDtUs = state.extra["min_dt"]["dt_us"].get<double>();
+        summary.minDtTimeUs = state.extra["min_dt"]["time_us"].get<double>();
+        summary.minDtLimiter = state.extra["min_dt"]["limiter"].get<std::string>();
+    }
+    summary.resumed = true;
+    // Carry the snapshots and history of the interrupted run into the new file: its run
+    // file (stopped by a signal), or the temporary it left when it was killed outright.
+    if (std::filesystem::exists(runFile)) {
+        schedule = scheduleOf(state, runFile, sim.scene().output.snapshotEvery);
+        carryOver(runFile, schedule, writer);
+    } else if (const auto orphan = io::orphanedTemporary(runFile)) {
+        schedule = scheduleOf(state, *orphan, sim.scene().output.snapshotEvery);
+        carryOver(*orphan, schedule, writer);
+        std::error_code ignored;
+        std::filesystem::remove(*orphan, ignored); // all it held is in the new file now
+        log("carried the snapshots of " + orphan->string() +
+            " (a run killed outright) into the new file");
+    }
+    log("resumed from " + checkpointPath.string() + " at t = " + std::to_string(sim.time()) +
+        " us, step " + std::to_string(sim.step()));
+    return schedule;
+}
+
+/// The progress line on stderr.
+std::string progressLine(const Simulation& sim, double wallSeconds, double startTimeUs) {
+    const double endTime = sim.scene().run.endTime;
+    const double rate = (sim.time() - startTimeUs) / std::max(wallSeconds, 1e-9);
+    const double eta = rate > 0 ? (endTime - sim.time()) / rate : NAN;
+    const std::string limiter = limiterOf(sim);
+    std::string elements;
+    if (const fe::FeSolid* fe = sim.finiteElements()) {
+        elements = "  elements " + std::to_string(fe->evaluatedCount()) + " active/" +
+                   std::to_string(fe->elements().size()) + " (" +
+                   std::to_string(fe->erodedCount()) + " eroded)";
+    }
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "t %.4f/%.3f us  dt %.2e us (%s)  particles %zu active/%zu%s  wall %s  "
+                  "ETA <= %s  energy error %+.2e",
+                  sim.time(), endTime, sim.lastDt(), limiter.c_str(), sim.activeCount(),
+                  sim.aliveCount(), elements.c_str(), formatDuration(wallSeconds).c_str(),
+                  formatDuration(eta).c_str(), sim.energyError());
+    return line;
+}
+
+/// The run's facts for the run file's /provenance.
+nlohmann::json finalFacts(const Simulation& sim, const RunSummary& summary,
+                          const RunOptions& options) {
+    const Totals t = sim.totals();
+    return {{"wall_time_s", summary.wallSeconds},
+            {"threads", options.threads},
+            {"steps", sim.step()},
+            {"end_time_us", sim.time()},
+            {"particles", summary.particles},
+            {"alive_particles", t.alive},
+            {"deleted_runaway", sim.runawayDeleted()},
+            {"deleted_out_of_domain", sim.outOfDomainDeleted()},
+            {"eroded_elements", t.erodedElements},
+            {"max_abs_energy_error", summary.maxEnergyError},
+            {"particle_spacing_mm", sim.scene().sph.particleSpacing},
+            {"resumed", summary.resumed},
+            {"min_dt_us", std::isfinite(summary.minDtUs) ? nlohmann::json(summary.minDtUs)
+                                                         : nlohmann::json(nullptr)},
+            {"min_dt_time_us", summary.minDtTimeUs},
+            {"min_dt_limiter", summary.minDtLimiter},
+            {"particle_steps_per_s", summary.particleSteps / std::max(summary.wallSeconds, 1e-9)}};
+}
+
 } // namespace
 
 RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
@@ -401,42 +495,8 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     };
     io::RunFileWriter writer(options.runFile, sceneText, materialsText, provenance);
     if (options.resume && std::filesystem::exists(checkpointPath)) {
-        const io::CheckpointState state = io::readCheckpoint(checkpointPath);
-        // A checkpoint of another scene with the same point count would restore without a
-        // word, and the run file's /scene would describe a run it did not come from.
-        if (state.extra.contains("scene_fingerprint") &&
-            state.extra["scene_fingerprint"] != fingerprint) {
-            throw InputError(checkpointPath.string(), "/extra/scene_fingerprint",
-                             "the checkpoint was written by a run of another scene or material "
-                             "library (fingerprint " +
-                                 state.extra["scene_fingerprint"].get<std::string>() +
-                                 ", this run's " + fingerprint + ")",
-                             "--resume with the scene and --materials of the interrupted run, "
-                             "or delete the checkpoint to start afresh");
-        }
-        restoreCheckpoint(sim, state);
-        summary.maxEnergyError = state.extra.value("max_energy_error", 0.0);
-        if (state.extra.contains("min_dt")) {
-            summary.minDtUs = state.extra["min_dt"]["dt_us"].get<double>();
-            summary.minDtTimeUs = state.extra["min_dt"]["time_us"].get<double>();
-            summary.minDtLimiter = state.extra["min_dt"]["limiter"].get<std::string>();
-        }
-        summary.resumed = true;
-        // Carry the snapshots and history of the interrupted run into the new file: its run
-        // file (stopped by a signal), or the temporary it left when it was killed outright.
-        if (std::filesystem::exists(options.runFile)) {
-            schedule = scheduleOf(state, options.runFile, scene.output.snapshotEvery);
-            carryOver(options.runFile, schedule, writer);
-        } else if (const auto orphan = io::orphanedTemporary(options.runFile)) {
-            schedule = scheduleOf(state, *orphan, scene.output.snapshotEvery);
-            carryOver(*orphan, schedule, writer);
-            std::error_code ignored;
-            std::filesystem::remove(*orphan, ignored); // all it held is in the new file now
-            log("carried the snapshots of " + orphan->string() +
-                " (a run killed outright) into the new file");
-        }
-        log("resumed from " + checkpointPath.string() + " at t = " + std::to_string(sim.time()) +
-            " us, step " + std::to_string(sim.step()));
+        schedule =
+            resumeFrom(checkpointPath, fingerprint, options.runFile, sim, summary, writer, log);
     }
 
     std::vector<double> deviator;
@@ -494,25 +554,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         }
         if (!options.quiet && secondsSince(lastProgress) >= 1.0) {
             lastProgress = Clock::now();
-            const double wall = secondsSince(t0);
-            const double rate = (sim.time() - startTime) / std::max(wall, 1e-9);
-            const double eta = rate > 0 ? (scene.run.endTime - sim.time()) / rate : NAN;
-            char line[512];
-            const std::string limiter = limiterOf(sim);
-            std::string elements;
-            if (const fe::FeSolid* fe = sim.finiteElements()) {
-                elements = "  elements " + std::to_string(fe->evaluatedCount()) + " active/" +
-                           std::to_string(fe->elements().size()) + " (" +
-                           std::to_string(fe->erodedCount()) + " eroded)";
-            }
-            std::snprintf(line, sizeof line,
-                          "t %.4f/%.3f us  dt %.2e us (%s)  particles %zu active/%zu%s  wall %s  "
-                          "ETA <= %s  energy error %+.2e",
-                          sim.time(), scene.run.endTime, sim.lastDt(), limiter.c_str(),
-                          sim.activeCount(), sim.aliveCount(), elements.c_str(),
-                          formatDuration(wall).c_str(), formatDuration(eta).c_str(),
-                          sim.energyError());
-            log(line);
+            log(progressLine(sim, secondsSince(t0), startTime));
         }
         if (options.checkpointEverySeconds > 0 &&
             secondsSince(lastCheckpoint) >= options.checkpointEverySeconds) {
@@ -534,25 +576,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     if (lastSnapshotStep != sim.step()) {
         snapshot();
     }
-    const Totals t = sim.totals();
-    nlohmann::json facts = {
-        {"wall_time_s", summary.wallSeconds},
-        {"threads", options.threads},
-        {"steps", sim.step()},
-        {"end_time_us", sim.time()},
-        {"particles", summary.particles},
-        {"alive_particles", t.alive},
-        {"deleted_runaway", sim.runawayDeleted()},
-        {"deleted_out_of_domain", sim.outOfDomainDeleted()},
-        {"eroded_elements", t.erodedElements},
-        {"max_abs_energy_error", summary.maxEnergyError},
-        {"particle_spacing_mm", scene.sph.particleSpacing},
-        {"resumed", summary.resumed},
-        {"min_dt_us", std::isfinite(summary.minDtUs) ? nlohmann::json(summary.minDtUs)
-                                                     : nlohmann::json(nullptr)},
-        {"min_dt_time_us", summary.minDtTimeUs},
-        {"min_dt_limiter", summary.minDtLimiter},
-        {"particle_steps_per_s", summary.particleSteps / std::max(summary.wallSeconds, 1e-9)}};
+    nlohmann::json facts = finalFacts(sim, summary, options);
     if (reason) {
         summary.stopReason = *reason;
         summary.complete = true;

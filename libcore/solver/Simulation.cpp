@@ -4,6 +4,7 @@
 #include "core/Parallel.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -14,8 +15,7 @@ namespace hvi::solver {
 namespace {
 constexpr double kAxisClearance = 0.1; ///< particles are kept at r >= 0.1 h (Spheral's eta_min)
 constexpr double kMaxDtGrowth = 1.25;
-constexpr int kProgressEvery = 10;          ///< steps between penetration checks
-constexpr std::size_t kFeCrossingItems = 3; ///< items behind an FE body's face: penetrated
+constexpr int kProgressEvery = 10; ///< steps between penetration checks
 } // namespace
 
 Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibrary& library,
@@ -38,7 +38,7 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     if (m_scene.hasFeBodies() && m_scene.fe.erodedToParticles) {
         m_eroded = std::make_unique<ErodedParticles>(axi, m_scene.sph.smoothingLengthFactor);
     }
-    std::vector<BodyMaterial> bodyMaterials, elementMaterials;
+    std::vector<material::BodyMaterial> bodyMaterials, elementMaterials;
     std::vector<contact::ContactBody> contactBodies;
     std::vector<double> erosionFactors;
     fe::NodeSet nodes;
@@ -51,12 +51,12 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         const auto& body = m_scene.bodies[b];
         const auto& spec = m_specs[b];
         const double rho0 = spec.referenceDensity;
-        BodyMaterial bm;
+        material::BodyMaterial bm;
         bm.spec = &m_specs[b];
         bm.strength = body.strength && spec.hasStrength();
         bm.minDensity = m_scene.sph.minDensityRatio * rho0;
-        bm.maxDensity = densityCeiling(spec);
-        BodyMaterial em = bm;
+        bm.maxDensity = material::densityCeiling(spec);
+        material::BodyMaterial em = bm;
         if (body.discretization == scene::Discretization::Fe) {
             const fe::BodyMesh mesh =
                 fe::meshBody(body, static_cast<int32_t>(b), rho0, 0.0, axi, nodes, elements);
@@ -97,9 +97,9 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     if (anyStrength) {
         m_particles.enableStrength();
     }
-    m_materials = std::make_unique<MaterialPackage>(std::move(bodyMaterials));
+    m_materials = std::make_unique<material::MaterialPackage>(std::move(bodyMaterials));
     if (m_scene.hasFeBodies()) {
-        m_feMaterials = std::make_unique<MaterialPackage>(std::move(elementMaterials));
+        m_feMaterials = std::make_unique<material::MaterialPackage>(std::move(elementMaterials));
         fe::FeOptions feOptions;
         feOptions.axisymmetric = axi;
         feOptions.hourglassCoefficient = m_scene.fe.hourglassCoefficient;
@@ -129,27 +129,19 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     m_searchOptions.kernelSupport = sph::kKernelSupport;
     m_searchOptions.skipDormant = m_options.skipDormant;
 
-    // Deletion limits: runaway speed and the domain box.
-    const double vMax = m_scene.maxInitialSpeed();
-    m_runawaySpeed = vMax > 0.0 ? m_scene.sph.runawaySpeedFactor * vMax
-                                : std::numeric_limits<double>::infinity();
-    double zLo = std::numeric_limits<double>::infinity(), zHi = -zLo, projectileSize = 0.0;
-    for (const auto& body : m_scene.bodies) {
-        zLo = std::min(zLo, body.shape.boundZMin());
-        zHi = std::max(zHi, body.shape.boundZMax());
-        projectileSize = std::max(projectileSize, body.shape.boundZMax() - body.shape.boundZMin());
+    m_deletion = DeletionRule::of(m_scene);
+    std::vector<double> spacing;
+    for (const auto& fill : m_fills) {
+        spacing.push_back(fill.spacing);
     }
-    m_zMin = m_scene.domain.zMin.value_or(zLo - 2.0 * projectileSize);
-    m_zMax = m_scene.domain.zMax.value_or(zHi + 5.0);
-    m_rMax = m_scene.domain.radius;
-    m_penetrated.assign(m_scene.bodies.size(), 0);
+    m_stop = std::make_unique<StopRules>(m_scene, std::move(spacing));
 
     m_rates.resize(m_particles.size(), m_particles.hasStrength());
     m_aliveCount = static_cast<std::size_t>(
         std::count(m_particles.alive.begin(), m_particles.alive.end(), uint8_t{1}));
     refreshRates();
     const Totals t = totals();
-    m_initialEnergy = t.kinetic + t.internal;
+    m_ledger.setInitialEnergy(t.kinetic + t.internal);
     updateProgress();
 }
 
@@ -175,8 +167,7 @@ void Simulation::refreshRates() {
         if (!(dt > 0.0)) {
             dt = m_scene.run.cfl * std::min(m_hydro->stableTimeStep(), m_fe->stableTimeStep());
         }
-        m_contact->vote(m_particles, {&m_vzHalf, &m_vrHalf, &m_eHalf}, m_fe->elements(),
-                        m_fe->nodes(), dt);
+        m_contact->vote(m_particles, m_half.contactView(), m_fe->elements(), m_fe->nodes(), dt);
     }
 }
 
@@ -233,16 +224,7 @@ void Simulation::computeRates() {
 
 void Simulation::resetHalfStep() {
     const auto& ps = m_particles;
-    m_vzHalf = ps.vz;
-    m_vrHalf = ps.vr;
-    m_eHalf = ps.e;
-    m_rhoHalf = ps.rho;
-    m_hHalf = ps.h;
-    if (ps.hasStrength()) {
-        m_szzHalf = ps.szz;
-        m_srrHalf = ps.srr;
-        m_srzHalf = ps.srz;
-    }
+    m_half.reset(ps);
     m_evolving.clear();
     m_isEvolving.assign(ps.size(), 0);
     m_packAll = true; // the particle arrays may have been replaced (a resume)
@@ -264,24 +246,26 @@ void Simulation::includeEvolving(const std::vector<int32_t>& items) {
     }
 }
 
-void Simulation::advance() {
-    auto& ps = m_particles;
-    const bool strength = ps.hasStrength();
-    const bool axi = m_scene.geometry == scene::Geometry::Axisymmetric;
-
-    double vote = m_hydro->stableTimeStep();
-    m_dtLimiter = "sph";
-    if (m_fe) {
-        if (m_fe->stableTimeStep() < vote) {
-            vote = m_fe->stableTimeStep();
-            m_dtLimiter = "fe";
-        }
-        if (m_contact->stableTimeStep() < vote) {
-            vote = m_contact->stableTimeStep();
-            m_dtLimiter = "contact";
+double Simulation::nextTimeStep() {
+    // The packages' votes in a fixed order; a tie goes to the first.
+    struct Vote {
+        const char* package;
+        double dt;
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::array<Vote, 3> votes{{
+        {"sph", m_hydro->stableTimeStep()},
+        {"fe", m_fe ? m_fe->stableTimeStep() : inf},
+        {"contact", m_contact ? m_contact->stableTimeStep() : inf},
+    }};
+    const Vote* smallest = &votes[0];
+    for (const Vote& v : votes) {
+        if (v.dt < smallest->dt) {
+            smallest = &v;
         }
     }
-    double dt = m_scene.run.cfl * vote;
+    m_dtLimiter = smallest->package;
+    double dt = m_scene.run.cfl * smallest->dt;
     if (!std::isfinite(dt)) {
         dt = m_scene.run.cfl * m_minSpacing; // nothing active: any step is stable
     }
@@ -292,20 +276,29 @@ void Simulation::advance() {
     if (remaining > 0.0 && dt > remaining) {
         dt = remaining;
     }
+    return dt;
+}
+
+void Simulation::advance() {
+    auto& ps = m_particles;
+    const bool axi = m_scene.geometry == scene::Geometry::Axisymmetric;
+    const double dt = nextTimeStep();
     const double half = 0.5 * dt;
 
     // The kick-drift-kick loops run over the evolving particles only (see includeEvolving):
     // every other particle is at rest in its reference state with zero rates, where a kick
     // or a drift changes nothing, and its half-step arrays already equal its state.
     const std::vector<int32_t>& evolving = m_evolving;
-    auto& rt = m_rates;
+    const HalfStep::Lanes lanes = m_half.lanes(ps, m_rates);
+    const std::vector<double>& vzHalf = m_half.vz();
+    std::vector<double>& vrHalf = m_half.vr();
     // Each package's share of the step (the benchmark's like-for-like figures): SPH is every
     // particle loop, FE the node integration, element update and eroded-element conversion,
     // contact the constraint alone.
-    using Clock = std::chrono::steady_clock;
-    auto lap = Clock::now();
+    using WallClock = std::chrono::steady_clock;
+    auto lap = WallClock::now();
     auto book = [&lap](double& seconds) {
-        const auto now = Clock::now();
+        const auto now = WallClock::now();
         seconds += std::chrono::duration<double>(now - lap).count();
         lap = now;
     };
@@ -314,18 +307,8 @@ void Simulation::advance() {
 #pragma omp parallel for schedule(static) if (count > kParallelMinItems)
     for (std::size_t a = 0; a < count; ++a) {
         const auto i = static_cast<std::size_t>(evolving[a]);
-        if (!ps.alive[i]) {
-            continue;
-        }
-        m_vzHalf[i] = ps.vz[i] + half * rt.az[i];
-        m_vrHalf[i] = ps.vr[i] + half * rt.ar[i];
-        m_eHalf[i] = ps.e[i] + half * rt.de[i];
-        m_rhoHalf[i] = ps.rho[i] + half * rt.drho[i];
-        m_hHalf[i] = ps.h[i] + half * rt.dh[i];
-        if (strength) {
-            m_szzHalf[i] = ps.szz[i] + half * rt.dszz[i];
-            m_srrHalf[i] = ps.srr[i] + half * rt.dsrr[i];
-            m_srzHalf[i] = ps.srz[i] + half * rt.dsrz[i];
+        if (ps.alive[i]) {
+            lanes.kick(i, half);
         }
     }
     book(m_packageSeconds.sph);
@@ -333,8 +316,7 @@ void Simulation::advance() {
         kickNodes(dt);
         book(m_packageSeconds.fe);
         // Contact constrains the half-step velocities before anything drifts.
-        m_contact->resolve(ps, {&m_vzHalf, &m_vrHalf, &m_eHalf}, m_fe->elements(), m_fe->nodes(),
-                           dt);
+        m_contact->resolve(ps, m_half.contactView(), m_fe->elements(), m_fe->nodes(), dt);
         book(m_packageSeconds.contact);
         driftNodes(dt);
         book(m_packageSeconds.fe);
@@ -350,26 +332,17 @@ void Simulation::advance() {
         if (!ps.alive[i]) {
             continue;
         }
-        ps.z[i] += dt * m_vzHalf[i];
-        ps.r[i] += dt * m_vrHalf[i];
+        ps.z[i] += dt * vzHalf[i];
+        ps.r[i] += dt * vrHalf[i];
         if (axi) {
             // Reflect at the axis: no particle ever has r < 0 (Spheral's AxisBoundaryRZ).
             const double rMin = kAxisClearance * ps.h[i];
             if (ps.r[i] < rMin) {
                 ps.r[i] = std::max(2.0 * rMin - ps.r[i], rMin);
-                m_vrHalf[i] = std::fabs(m_vrHalf[i]);
+                vrHalf[i] = std::fabs(vrHalf[i]);
             }
         }
-        ps.vz[i] = m_vzHalf[i] + half * rt.az[i];
-        ps.vr[i] = m_vrHalf[i] + half * rt.ar[i];
-        ps.e[i] = m_eHalf[i] + half * rt.de[i];
-        ps.rho[i] = m_rhoHalf[i] + half * rt.drho[i];
-        ps.h[i] = m_hHalf[i] + half * rt.dh[i];
-        if (strength) {
-            ps.szz[i] = m_szzHalf[i] + half * rt.dszz[i];
-            ps.srr[i] = m_srrHalf[i] + half * rt.dsrr[i];
-            ps.srz[i] = m_srzHalf[i] + half * rt.dsrz[i];
-        }
+        lanes.predict(i, half);
     }
     clampSmoothingLengths();
     m_materials->updatePressure(ps, evolving);
@@ -389,45 +362,36 @@ void Simulation::advance() {
         if (!ps.alive[i]) {
             continue;
         }
-        ps.vz[i] = m_vzHalf[i] + half * rt.az[i];
-        ps.vr[i] = m_vrHalf[i] + half * rt.ar[i];
-        ps.e[i] = m_eHalf[i] + half * rt.de[i];
-        // Density and smoothing length stay within sane bounds: an expanding fragment's
-        // density falls under the stress cut-off long before it nears zero, and no particle
-        // is compressed beyond its equation of state's range (densityCeiling()).
+        lanes.predict(i, half);
+        // Density stays within sane bounds: an expanding fragment's density falls under the
+        // stress cut-off long before it nears zero, and no particle is compressed beyond its
+        // equation of state's range (densityCeiling()).
         const auto& body = bodies[static_cast<std::size_t>(ps.body[i])];
-        ps.rho[i] =
-            std::clamp(m_rhoHalf[i] + half * rt.drho[i], 0.1 * body.minDensity, body.maxDensity);
-        ps.h[i] = m_hHalf[i] + half * rt.dh[i];
-        if (strength) {
-            ps.szz[i] = m_szzHalf[i] + half * rt.dszz[i];
-            ps.srr[i] = m_srrHalf[i] + half * rt.dsrr[i];
-            ps.srz[i] = m_srzHalf[i] + half * rt.dsrz[i];
-        }
+        ps.rho[i] = std::clamp(ps.rho[i], 0.1 * body.minDensity, body.maxDensity);
     }
     book(m_packageSeconds.sph);
     if (m_fe) {
         kickNodes(dt);
         if (m_eroded) {
-            convertErodedElements();
+            convertErodedElements(lanes);
         }
         book(m_packageSeconds.fe);
     }
     clampSmoothingLengths();
-    m_materials->applyPlasticity(ps, rt, m_neighbours.active, dt);
+    m_materials->applyPlasticity(ps, m_rates, m_neighbours.active, dt);
     m_materials->updatePressure(ps, evolving);
 
     m_time += dt;
     m_dt = dt;
     ++m_step;
-    deleteParticles();
+    deletePoints();
     book(m_packageSeconds.sph);
     if (m_step % kProgressEvery == 0) {
         updateProgress();
     }
 }
 
-void Simulation::convertErodedElements() {
+void Simulation::convertErodedElements(const HalfStep::Lanes& lanes) {
     const auto& eroded = m_fe->erodedThisUpdate();
     if (eroded.empty()) {
         return;
@@ -444,17 +408,7 @@ void Simulation::convertErodedElements() {
     // A new particle starts the next step from its state (its rates are zero until the next
     // evaluation), so its half-step arrays are its state, as for any particle at rest.
     for (const int32_t k : created) {
-        const auto i = static_cast<std::size_t>(k);
-        m_vzHalf[i] = ps.vz[i];
-        m_vrHalf[i] = ps.vr[i];
-        m_eHalf[i] = ps.e[i];
-        m_rhoHalf[i] = ps.rho[i];
-        m_hHalf[i] = ps.h[i];
-        if (ps.hasStrength()) {
-            m_szzHalf[i] = ps.szz[i];
-            m_srrHalf[i] = ps.srr[i];
-            m_srzHalf[i] = ps.srz[i];
-        }
+        lanes.hold(static_cast<std::size_t>(k));
     }
     m_aliveCount += created.size();
     includeEvolving(created);
@@ -489,330 +443,34 @@ void Simulation::clampSmoothingLengths() {
     }
 }
 
-void Simulation::deleteParticles() {
-    auto& ps = m_particles;
-    const double runaway2 = m_runawaySpeed * m_runawaySpeed;
+void Simulation::deletePoints() {
     // After the first step only evolving particles can have moved out of bounds.
-    const std::size_t n = m_step <= 1 ? ps.size() : m_evolving.size();
-    for (std::size_t a = 0; a < n; ++a) {
-        const std::size_t i = m_step <= 1 ? a : static_cast<std::size_t>(m_evolving[a]);
-        if (!ps.alive[i]) {
-            continue;
-        }
-        const double v2 = ps.vz[i] * ps.vz[i] + ps.vr[i] * ps.vr[i];
-        if (!std::isfinite(v2) || !std::isfinite(ps.e[i]) || !std::isfinite(ps.rho[i]) ||
-            !std::isfinite(ps.z[i]) || !std::isfinite(ps.r[i])) {
-            throw RuntimeFailure("non-finite state at t = " + std::to_string(m_time) +
-                                 " us, step " + std::to_string(m_step) + ", particle " +
-                                 std::to_string(i) + " of body '" +
-                                 m_scene.bodies[static_cast<std::size_t>(ps.body[i])].name +
-                                 "' (try a smaller cfl or a larger min_density_ratio)");
-        }
-        const bool runaway = v2 > runaway2;
-        const bool outside = ps.z[i] < m_zMin || ps.z[i] > m_zMax || std::fabs(ps.r[i]) > m_rMax;
-        if (runaway || outside) {
-            ps.alive[i] = 0;
-            m_deletedEnergy += ps.mass[i] * (0.5 * v2 + ps.e[i]);
-            m_deletedMass += ps.mass[i];
-            m_deletedMomentumZ += ps.mass[i] * ps.vz[i];
-            ++(runaway ? m_runawayDeleted : m_outOfDomainDeleted);
-            --m_aliveCount;
-        }
-    }
-    if (!m_fe) {
-        return;
-    }
-    // Nodes: a non-finite state is a failure; a free node (no alive element left) obeys the
-    // same runaway and domain rules as a particle.
-    auto& nd = m_fe->nodes();
-    for (std::size_t k = 0; k < nd.size(); ++k) {
-        if (!nd.alive[k]) {
-            continue;
-        }
-        const double v2 = nd.vz[k] * nd.vz[k] + nd.vr[k] * nd.vr[k];
-        if (!std::isfinite(v2) || !std::isfinite(nd.z[k]) || !std::isfinite(nd.r[k])) {
-            throw RuntimeFailure("non-finite state at t = " + std::to_string(m_time) +
-                                 " us, step " + std::to_string(m_step) + ", node " +
-                                 std::to_string(k) + " of body '" +
-                                 m_scene.bodies[static_cast<std::size_t>(nd.body[k])].name +
-                                 "' (try a smaller cfl or a larger fe.hourglass_coefficient)");
-        }
-        if (nd.elementCount[k] > 0) {
-            continue;
-        }
-        const bool runaway = v2 > runaway2;
-        const bool outside = nd.z[k] < m_zMin || nd.z[k] > m_zMax || std::fabs(nd.r[k]) > m_rMax;
-        if (runaway || outside) {
-            nd.alive[k] = 0;
-            m_deletedEnergy += 0.5 * nd.mass[k] * v2;
-            m_deletedMass += nd.mass[k];
-            m_deletedMomentumZ += nd.mass[k] * nd.vz[k];
-            ++(runaway ? m_runawayDeleted : m_outOfDomainDeleted);
-        }
+    const RunClock clock{m_time, m_step};
+    m_aliveCount -= deleteParticles(m_particles, m_step <= 1 ? nullptr : &m_evolving, m_deletion,
+                                    m_scene, clock, m_ledger);
+    if (m_fe) {
+        deleteFreeNodes(m_fe->nodes(), m_deletion, m_scene, clock, m_ledger);
     }
 }
 
 Totals Simulation::totals() const {
-    const auto& ps = m_particles;
-    Totals t;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-        if (!ps.alive[i]) {
-            t.deleted += sph::isUnusedSlot(ps.alive[i], ps.mass[i]) ? 0 : 1;
-            continue;
-        }
-        ++t.alive;
-        const double m = ps.mass[i];
-        t.kinetic += 0.5 * m * (ps.vz[i] * ps.vz[i] + ps.vr[i] * ps.vr[i]);
-        t.internal += m * ps.e[i];
-        t.mass += m;
-        t.momentumZ += m * ps.vz[i];
-    }
-    t.deletedEnergy = m_deletedEnergy;
-    if (m_fe) {
-        const auto& nd = m_fe->nodes();
-        for (std::size_t k = 0; k < nd.size(); ++k) {
-            if (nd.alive[k]) {
-                const double m = nd.mass[k];
-                t.kinetic += 0.5 * m * (nd.vz[k] * nd.vz[k] + nd.vr[k] * nd.vr[k]);
-                t.mass += m;
-                t.momentumZ += m * nd.vz[k];
-            }
-        }
-        const auto& el = m_fe->elements();
-        for (std::size_t i = 0; i < el.size(); ++i) {
-            if (el.alive[i]) {
-                t.internal += el.mass[i] * el.e[i];
-            }
-        }
-        t.deletedEnergy += m_fe->erodedEnergy() + m_contact->freeNodeHeat();
-        t.erodedElements = m_fe->erodedCount();
-    }
-    t.deletedMass = m_deletedMass;
-    t.deletedMomentumZ = m_deletedMomentumZ;
-    t.active = m_neighbours.active.size();
-    return t;
+    return m_ledger.totals(m_particles, m_fe.get(), m_contact.get(), m_neighbours.active.size());
 }
 
 double Simulation::energyError() const {
-    const Totals t = totals();
-    const double scale = std::fabs(m_initialEnergy) > 0.0 ? std::fabs(m_initialEnergy) : 1.0;
-    return (t.kinetic + t.internal + t.deletedEnergy - m_initialEnergy) / scale;
+    return m_ledger.energyError(totals());
 }
 
 void Simulation::updateProgress() {
-    const auto& ps = m_particles;
-    const double moving = m_scene.run.stopDebrisSpeed;
-    double fastest = 0.0;
-    // Progress of the material moving forward (faster than the stop speed): its foremost
-    // item, and its centre of mass. Either advancing by a spacing counts, so neither a lone
-    // slow item stalled ahead of the cloud (against a layer) nor a few fast stray items hide
-    // a debris cloud that is still crossing a gap.
-    double front = -std::numeric_limits<double>::infinity();
-    double movingMass = 0.0, movingMoment = 0.0;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-        if (!ps.alive[i]) {
-            continue;
-        }
-        fastest = std::max(fastest, ps.vz[i]);
-        if (ps.vz[i] > moving) {
-            front = std::max(front, ps.z[i]);
-            movingMass += ps.mass[i];
-            movingMoment += ps.mass[i] * ps.z[i];
-        }
-    }
-    const fe::NodeSet* nodes = m_fe ? &m_fe->nodes() : nullptr;
-    if (nodes) {
-        for (std::size_t k = 0; k < nodes->size(); ++k) {
-            if (!nodes->alive[k]) {
-                continue;
-            }
-            fastest = std::max(fastest, nodes->vz[k]);
-            if (nodes->vz[k] > moving) {
-                front = std::max(front, nodes->z[k]);
-                movingMass += nodes->mass[k];
-                movingMoment += nodes->mass[k] * nodes->z[k];
-            }
-        }
-    }
-    m_debrisSpeed = fastest;
-    const double centre =
-        movingMass > 0.0 ? movingMoment / movingMass : -std::numeric_limits<double>::infinity();
-    bool newPenetration = false;
-    for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
-        const auto& body = m_scene.bodies[b];
-        if (m_penetrated[b] || body.role == scene::BodyRole::Projectile) {
-            continue;
-        }
-        const double spacing = m_fills[b].spacing;
-        const double rear = body.shape.boundZMax() + 0.5 * spacing;
-        const double rLo = body.shape.boundRMin(), rHi = body.shape.boundRMax();
-        // An FE body bulges without breaking: it is penetrated where material of other
-        // bodies lies behind its initial rear face in a radial bin (one element wide) that
-        // holds none of its meshed material any more, a hole. SPH bodies: anything behind the
-        // initial face (their own spall counts as debris).
-        std::vector<double> rearOf;
-        const bool fe = body.discretization == scene::Discretization::Fe;
-        if (fe) {
-            rearOf.assign(static_cast<std::size_t>((rHi - rLo) / spacing) + 2,
-                          -std::numeric_limits<double>::infinity());
-            for (std::size_t k = 0; k < nodes->size(); ++k) {
-                if (static_cast<std::size_t>(nodes->body[k]) == b && nodes->elementCount[k] > 0) {
-                    const double bin = std::floor((nodes->r[k] - rLo) / spacing);
-                    if (bin >= 0.0 && bin < static_cast<double>(rearOf.size())) {
-                        auto& slot = rearOf[static_cast<std::size_t>(bin)];
-                        slot = std::max(slot, nodes->z[k] + 0.5 * spacing);
-                    }
-                }
-            }
-        }
-        auto behind = [&](double z, double r) {
-            if (r < rLo || r > rHi) {
-                return false;
-            }
-            if (!fe) {
-                return z > rear;
-            }
-            // Only where the body has no meshed material left (a hole) does material behind
-            // the initial face count: where it still has some, the wall holds there, whatever
-            // lone free node got past it.
-            const auto bin = static_cast<std::size_t>((r - rLo) / spacing);
-            return bin < rearOf.size() && !std::isfinite(rearOf[bin]) && z > rear;
-        };
-        // SPH bodies: one item behind the face. FE bodies: as many as hvi-assess asks for
-        // material crossing a rear wall (assess::Criteria::minCrossingItems), so that a lone
-        // free node slipping through a one-element crater on the axis ends no run early.
-        const std::size_t needed = fe ? kFeCrossingItems : 1;
-        std::size_t crossing = 0;
-        for (std::size_t i = 0; i < ps.size() && crossing < needed; ++i) {
-            if (ps.alive[i] && static_cast<std::size_t>(ps.body[i]) != b &&
-                behind(ps.z[i], ps.r[i])) {
-                ++crossing;
-            }
-        }
-        for (std::size_t k = 0; nodes && crossing < needed && k < nodes->size(); ++k) {
-            if (nodes->alive[k] && static_cast<std::size_t>(nodes->body[k]) != b &&
-                behind(nodes->z[k], nodes->r[k])) {
-                ++crossing;
-            }
-        }
-        if (crossing >= needed) {
-            m_penetrated[b] = 1;
-            newPenetration = true;
-        }
-    }
-    // Progress is an advance of at least what the stop speed carries material in the rule's
-    // window (or a spacing, if less): a layer still bulging at the stop speed under the debris
-    // pressing on it is progress. With a spacing alone (0.16 km/s for 0.04 mm in 0.25 us)
-    // HITF03147-3 stopped at 8.9 us with the debris still pushing its rear facesheet at
-    // 0.7 km/s, which tore at 12.2 us.
-    const double window = m_scene.run.stopNoNewPenetration;
-    const double advance =
-        window > 0.0 && moving > 0.0 ? std::min(m_minSpacing, moving * window) : m_minSpacing;
-    if (newPenetration || front > m_progressFront + advance ||
-        centre > m_progressCentre + advance) {
-        m_lastProgressTime = m_time;
-        m_progressFront = std::max(front, m_progressFront);
-        m_progressCentre = std::max(centre, m_progressCentre);
-    }
-    // The wall check is a pass over every point: made only once progress has stalled for
-    // half the window (the clock advances after this call, so not the whole window).
-    m_rearWallActive = false;
-    if (window > 0.0 && m_time - m_lastProgressTime > 0.5 * window) {
-        updateRearWallActivity(moving);
-    }
+    m_stop->update(m_time, m_particles, m_fe ? &m_fe->nodes() : nullptr);
 }
 
-void Simulation::updateRearWallActivity(double speed) {
-    m_rearWallActive = false;
-    double zRear = -std::numeric_limits<double>::infinity();
-    double rLo = std::numeric_limits<double>::infinity(), rHi = -rLo;
-    std::vector<uint8_t> isWall(m_scene.bodies.size(), 0);
-    for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
-        const auto& body = m_scene.bodies[b];
-        if (body.role == scene::BodyRole::RearWall) {
-            isWall[b] = 1;
-            zRear = std::max(zRear, body.shape.boundZMax() + 0.5 * m_fills[b].spacing);
-            rLo = std::min(rLo, body.shape.boundRMin());
-            rHi = std::max(rHi, body.shape.boundRMax());
-        }
-    }
-    if (!std::isfinite(zRear) || speed <= 0.0) {
-        return;
-    }
-    // The wall itself: its meshed nodes moving either way, or its particles moving outward
-    // no further than a wall thickness behind its rear face (a bulge or spall leaving; spall
-    // that has flown further, and ejecta thrown back off its front, which move away from
-    // the wall for good, are no longer the wall). Other bodies: what is in front of its rear
-    // face, within its radial extent, moving toward it.
-    auto approaching = [&](std::int32_t body, double z, double r, double vz) {
-        return !isWall[static_cast<std::size_t>(body)] && vz > speed && z < zRear && r >= rLo &&
-               r <= rHi;
-    };
-    const auto& ps = m_particles;
-    for (std::size_t i = 0; i < ps.size() && !m_rearWallActive; ++i) {
-        if (!ps.alive[i]) {
-            continue;
-        }
-        const auto b = static_cast<std::size_t>(ps.body[i]);
-        const bool wallMoving = isWall[b] && ps.vz[i] > speed &&
-                                ps.z[i] < zRear + m_scene.bodies[b].shape.boundZMax() -
-                                              m_scene.bodies[b].shape.boundZMin();
-        m_rearWallActive = wallMoving || approaching(ps.body[i], ps.z[i], ps.r[i], ps.vz[i]);
-    }
-    if (m_fe) {
-        const fe::NodeSet& nodes = m_fe->nodes();
-        for (std::size_t k = 0; k < nodes.size() && !m_rearWallActive; ++k) {
-            if (!nodes.alive[k]) {
-                continue;
-            }
-            const bool wallMoving = isWall[static_cast<std::size_t>(nodes.body[k])] &&
-                                    nodes.elementCount[k] > 0 && std::fabs(nodes.vz[k]) > speed;
-            m_rearWallActive =
-                wallMoving || approaching(nodes.body[k], nodes.z[k], nodes.r[k], nodes.vz[k]);
-        }
-    }
-}
-
-std::optional<std::string> Simulation::stopReason() const {
-    const auto& run = m_scene.run;
-    if (m_time >= run.endTime * (1.0 - 1e-12)) {
-        return "end_time";
-    }
-    if (m_step >= run.maxSteps) {
-        return "max_steps";
-    }
-    bool anyPenetrated = false;
-    for (std::size_t b = 0; b < m_scene.bodies.size(); ++b) {
-        anyPenetrated = anyPenetrated || m_penetrated[b];
-        if (run.stopOnRearWallPerforation && m_penetrated[b] &&
-            m_scene.bodies[b].role == scene::BodyRole::RearWall) {
-            return "rear_wall_perforated";
-        }
-    }
-    if (run.stopDebrisSpeed > 0.0 && m_step > 0 && m_debrisSpeed < run.stopDebrisSpeed) {
-        return "debris_stopped";
-    }
-    // Not while material still moves toward or in the rear wall: the wall may yet fail.
-    if (run.stopNoNewPenetration > 0.0 && anyPenetrated && !m_rearWallActive &&
-        m_time - m_lastProgressTime > run.stopNoNewPenetration) {
-        return "no_new_penetration";
-    }
-    return std::nullopt;
-}
-
-void Simulation::restoreClock(double time, long step, double dt, double initialEnergy,
-                              double deletedEnergy, double deletedMass, double deletedMomentumZ,
-                              std::size_t runaway, std::size_t outOfDomain, double erodedEnergy,
-                              std::size_t erodedCount) {
-    m_time = time;
-    m_step = step;
-    m_dt = dt;
-    m_initialEnergy = initialEnergy;
-    m_deletedEnergy = deletedEnergy;
-    m_deletedMass = deletedMass;
-    m_deletedMomentumZ = deletedMomentumZ;
-    m_runawayDeleted = runaway;
-    m_outOfDomainDeleted = outOfDomain;
+void Simulation::restoreClock(const Clock& clock, const Ledger::Account& account,
+                              const ErosionAccount& erosion) {
+    m_time = clock.time;
+    m_step = clock.step;
+    m_dt = clock.dt;
+    m_ledger.restore(account);
     m_aliveCount = 0;
     for (const auto a : m_particles.alive) {
         m_aliveCount += a ? 1 : 0;
@@ -827,7 +485,7 @@ void Simulation::restoreClock(double time, long step, double dt, double initialE
     m_isEvolving.assign(m_particles.size(), 1);
     computeRates(); // the neighbour lists; the rates themselves come from the checkpoint
     if (m_fe) {
-        m_fe->restoreErosion(erodedEnergy, erodedCount);
+        m_fe->restoreErosion(erosion.energy, erosion.count);
         m_fe->recountNodeElements();
         m_feMaterials->updatePressure(m_fe->elements());
     }

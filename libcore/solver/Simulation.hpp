@@ -1,6 +1,7 @@
 // The explicit time loop: it composes the physics packages (SPH hydro, finite elements, the
 // material pipeline they share, contact), takes the smallest time step any of them asks for,
-// applies the deletion rules and keeps the conservation ledger. No physics lives here; see
+// and applies the deletion rule (solver/DeletionRule.hpp), the conservation ledger
+// (solver/Ledger.hpp) and the stop rules (solver/StopRules.hpp). No physics lives here; see
 // the packages. A scene without FE bodies allocates nothing of the FE and contact packages.
 //
 // Integrator: kick-drift-kick leapfrog with a predicted end-of-step state (velocity Verlet in
@@ -21,10 +22,14 @@
 #include "contact/KinematicContact.hpp"
 #include "fe/FeSolid.hpp"
 #include "material/MaterialLibrary.hpp"
+#include "material/MaterialPackage.hpp"
 #include "scene/Scene.hpp"
+#include "scene/SceneLibrary.hpp"
+#include "solver/DeletionRule.hpp"
 #include "solver/ErodedParticles.hpp"
-#include "solver/MaterialPackage.hpp"
-#include "solver/SceneLibrary.hpp"
+#include "solver/HalfStep.hpp"
+#include "solver/Ledger.hpp"
+#include "solver/StopRules.hpp"
 #include "sph/NeighbourSearch.hpp"
 #include "sph/ParticleGenerator.hpp"
 #include "sph/SphHydro.hpp"
@@ -35,19 +40,6 @@
 #include <vector>
 
 namespace hvi::solver {
-
-/// Conservation ledger at one instant.
-struct Totals {
-    double kinetic = 0.0;       ///< particles and nodes [J] (planar: J/mm)
-    double internal = 0.0;      ///< particles and alive elements [J]
-    double deletedEnergy = 0.0; ///< deleted particles and free nodes, eroded elements [J]
-    double mass = 0.0;          ///< alive mass (particles and nodes) [mg]
-    double deletedMass = 0.0;   ///< [mg]
-    double momentumZ = 0.0;     ///< alive z-momentum [mg km/s]
-    double deletedMomentumZ = 0.0;
-    std::size_t alive = 0, deleted = 0, active = 0; ///< particles
-    std::size_t erodedElements = 0;
-};
 
 struct SimulationOptions {
     bool skipDormant = true; ///< the dormant-region optimisation (exact; off only for tests)
@@ -92,28 +84,38 @@ public:
     const std::string& dtLimiter() const { return m_dtLimiter; }
 
     Totals totals() const;
-    double initialEnergy() const { return m_initialEnergy; }
+    double initialEnergy() const { return m_ledger.account().initialEnergy; }
     /// (E + E_deleted - E0) / E0 [-].
     double energyError() const;
+    const Ledger& ledger() const { return m_ledger; }
 
     /// The stop rule that fires now, if any ("end_time", "debris_stopped",
     /// "no_new_penetration", "rear_wall_perforated", "max_steps").
-    std::optional<std::string> stopReason() const;
+    std::optional<std::string> stopReason() const { return m_stop->reason(m_time, m_step); }
     /// Bodies penetrated so far (material of another body behind their rear face).
-    const std::vector<uint8_t>& penetrated() const { return m_penetrated; }
-    double lastProgressTime() const { return m_lastProgressTime; }
+    const std::vector<uint8_t>& penetrated() const { return m_stop->penetrated(); }
+    double lastProgressTime() const { return m_stop->lastProgressTime(); }
 
     /// Counters of deletions by reason.
-    std::size_t runawayDeleted() const { return m_runawayDeleted; }
-    std::size_t outOfDomainDeleted() const { return m_outOfDomainDeleted; }
+    std::size_t runawayDeleted() const { return m_ledger.account().runaway; }
+    std::size_t outOfDomainDeleted() const { return m_ledger.account().outOfDomain; }
 
-    /// Restores time and counters after a checkpoint's particle and FE arrays were loaded, and
-    /// the derived state (pressures, neighbour lists); the caller then restores the rates
-    /// (rates()) and the votes (restoreVotes), which depend on the step's predicted state.
-    void restoreClock(double time, long step, double dt, double initialEnergy, double deletedEnergy,
-                      double deletedMass, double deletedMomentumZ, std::size_t runaway,
-                      std::size_t outOfDomain, double erodedEnergy = 0.0,
-                      std::size_t erodedCount = 0);
+    /// Where the run stands: what a checkpoint keeps besides the point sets' arrays.
+    struct Clock {
+        double time = 0.0; ///< [us]
+        long step = 0;
+        double dt = 0.0; ///< the last step [us]
+    };
+    /// The FE package's erosion account (eroded elements' energy [J] and count).
+    struct ErosionAccount {
+        double energy = 0.0;
+        std::size_t count = 0;
+    };
+    /// Restores the clock and the ledger after a checkpoint's particle and FE arrays were
+    /// loaded, and the derived state (pressures, neighbour lists); the caller then restores the
+    /// rates (rates()) and the votes (restoreVotes), which depend on the step's predicted state.
+    void restoreClock(const Clock& clock, const Ledger::Account& account,
+                      const ErosionAccount& erosion);
     /// The rates of the last step (the first kick of the next step uses them; checkpointed).
     const sph::ParticleRates& rates() const { return m_rates; }
     sph::ParticleRates& rates() { return m_rates; }
@@ -130,15 +132,14 @@ private:
     void resetHalfStep();
     /// Adds particles to the evolving set, kept sorted without repeats.
     void includeEvolving(const std::vector<int32_t>& items);
-    void deleteParticles();
+    /// The time step: the smallest package vote times the Courant factor, grown by at most
+    /// kMaxDtGrowth, ending on the end time.
+    double nextTimeStep();
+    void deletePoints();
     /// The elements the FE update eroded become particles (scene fe.eroded_material).
-    void convertErodedElements();
+    void convertErodedElements(const HalfStep::Lanes& lanes);
     void clampSmoothingLengths();
     void updateProgress();
-    /// Sets m_rearWallActive: an item of the rear wall moving faster than `speed` [km/s], or
-    /// an item of another body in front of the wall's rear face, within its radial extent,
-    /// moving toward it faster than `speed`.
-    void updateRearWallActivity(double speed);
     void driftNodes(double dt);
     void kickNodes(double dt);
 
@@ -149,8 +150,9 @@ private:
     sph::NeighbourList m_neighbours;
     sph::NeighbourSearchOptions m_searchOptions;
     std::unique_ptr<sph::SphHydro> m_hydro;
-    std::unique_ptr<MaterialPackage> m_materials;   ///< SPH bodies' material points
-    std::unique_ptr<MaterialPackage> m_feMaterials; ///< FE bodies' elements (FE scenes only)
+    std::unique_ptr<material::MaterialPackage> m_materials; ///< SPH bodies' material points
+    std::unique_ptr<material::MaterialPackage>
+        m_feMaterials; ///< FE bodies' elements (FE scenes only)
     std::unique_ptr<fe::FeSolid> m_fe;
     std::unique_ptr<contact::KinematicContact> m_contact;
     std::unique_ptr<ErodedParticles> m_eroded; ///< null unless eroded elements become particles
@@ -162,22 +164,10 @@ private:
     double m_time = 0.0;
     long m_step = 0;
     double m_dt = 0.0;
-    double m_initialEnergy = 0.0;
-    double m_deletedEnergy = 0.0, m_deletedMass = 0.0, m_deletedMomentumZ = 0.0;
-    std::size_t m_runawayDeleted = 0, m_outOfDomainDeleted = 0;
     std::size_t m_aliveCount = 0;
-    double m_runawaySpeed = 0.0;
-    double m_zMin = 0.0, m_zMax = 0.0, m_rMax = 0.0;
-
-    // Stop-rule state.
-    std::vector<uint8_t> m_penetrated;
-    double m_lastProgressTime = 0.0;
-    double m_progressFront = -1e300;
-    double m_progressCentre = -1e300; ///< furthest centre of mass of the moving material
-    double m_debrisSpeed = 0.0;       ///< fastest forward speed of any alive particle [km/s]
-    /// Material still moves toward or in the rear wall faster than the stop speed: the
-    /// no-new-penetration rule waits (updateRearWallActivity).
-    bool m_rearWallActive = false;
+    Ledger m_ledger;
+    DeletionRule m_deletion;
+    std::unique_ptr<StopRules> m_stop;
     double m_minSpacing = 0.0;
 
     // The evolving set: every particle that has been evaluated or pushed by contact since
@@ -187,9 +177,7 @@ private:
     std::vector<uint8_t> m_isEvolving;
     bool m_packAll = true; ///< the next SPH evaluation repacks every particle
 
-    // Half-step storage for the leapfrog.
-    std::vector<double> m_vzHalf, m_vrHalf, m_eHalf, m_rhoHalf, m_hHalf, m_szzHalf, m_srrHalf,
-        m_srzHalf;
+    HalfStep m_half; ///< the leapfrog's half-step state
 };
 
 } // namespace hvi::solver

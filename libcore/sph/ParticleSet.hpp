@@ -114,4 +114,23 @@ inline constexpr std::array<Field<ParticleRates>, 3> kStrengthRateFields{{
     {"dsrz", &ParticleRates::dsrz},
 }};
 
+/// What the leapfrog integrates (solver/HalfStep.hpp): each evolved field with its rate, in
+/// the order of its half-step arrays; the second list only with strength.
+struct IntegratedField {
+    std::vector<double> ParticleSet::*state;
+    std::vector<double> ParticleRates::*rate;
+};
+inline constexpr std::array<IntegratedField, 5> kIntegratedFields{{
+    {&ParticleSet::vz, &ParticleRates::az},
+    {&ParticleSet::vr, &ParticleRates::ar},
+    {&ParticleSet::e, &ParticleRates::de},
+    {&ParticleSet::rho, &ParticleRates::drho},
+    {&ParticleSet::h, &ParticleRates::dh},
+}};
+inline constexpr std::array<IntegratedField, 3> kIntegratedStrengthFields{{
+    {&ParticleSet::szz, &ParticleRates::dszz},
+    {&ParticleSet::srr, &ParticleRates::dsrr},
+    {&ParticleSet::srz, &ParticleRates::dsrz},
+}};
+
 } // namespace hvi::sph

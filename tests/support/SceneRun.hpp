@@ -3,7 +3,7 @@
 
 #include "fe/FeSolid.hpp"
 #include "scene/Scene.hpp"
-#include "solver/SceneLibrary.hpp"
+#include "scene/SceneLibrary.hpp"
 #include "solver/Simulation.hpp"
 
 #include <cstdlib>
@@ -21,7 +21,7 @@ inline double envOr(const char* name, double fallback) {
 /// Parses a scene document (validated like a file) with the built-in materials.
 inline scene::Scene makeScene(const nlohmann::json& doc) {
     const auto library =
-        solver::sceneLibrary(doc.value("materials", nlohmann::json::object()), "<test>");
+        scene::sceneLibrary(doc.value("materials", nlohmann::json::object()), "<test>");
     return scene::parseScene(doc, "<test>", library.names());
 }
 

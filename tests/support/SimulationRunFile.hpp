@@ -38,7 +38,7 @@ inline std::filesystem::path simulateToRunFile(const nlohmann::json& doc,
                                                const std::filesystem::path& path) {
     const auto start = std::chrono::steady_clock::now();
     const scene::Scene scene = makeScene(doc);
-    const auto library = solver::sceneLibrary(scene.materials, "<test>");
+    const auto library = scene::sceneLibrary(scene.materials, "<test>");
     solver::Simulation sim(scene, library);
     std::filesystem::remove(path);
     io::RunFileWriter writer(path, scene.resolved.dump(), "{}",

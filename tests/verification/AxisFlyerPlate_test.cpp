@@ -274,7 +274,7 @@ void expectOneDimensional(const char* flyer, const char* target, double speedKmS
     const double h = test::envOr("AXIS_H", 0.05);
     const json doc = flyerPlateScene(flyer, target, speedKmS, endUs, h);
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     PointSet points;
     points.add(sim, h);
     std::vector<Snapshot> snaps;

@@ -131,7 +131,7 @@ TEST(DebrisCloudAxis, AxisRingInLineWithItsNeighbours) {
     const double h = test::envOr("DEBRIS_H", 0.025);
     const json doc = debrisScene(h);
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     test::runUntil(sim, kEndUs);
     const auto rings = projectedCloud(sim.particles());
     for (int k = 0; k < kRings; ++k) {

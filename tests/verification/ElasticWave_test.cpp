@@ -65,7 +65,7 @@ TEST(ElasticWave, LongitudinalSpeedInAluminium) {
                    {"shape", {{"type", "rectangle"}, {"z_min_mm", 0.0}, {"z_max_mm", 4.0},
                               {"r_min_mm", 0.0}, {"r_max_mm", 3.0}}}}}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     double maxEnergyError = 0.0, yieldedStrain = 0.0;
     auto track = [&](const solver::Simulation& s) {
         maxEnergyError = std::max(maxEnergyError, std::fabs(s.energyError()));

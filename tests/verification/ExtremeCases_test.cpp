@@ -32,7 +32,7 @@ json thinPlateScene(double speed, const std::string& projectileMaterial) {
 /// Runs to the end, checking after every step that the state is finite and r >= 0.
 void runAndCheck(const json& doc, const std::string& label) {
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     double minR = 1e300;
     bool finite = true;
     test::runUntil(sim, scene.run.endTime, [&](const solver::Simulation& s) {

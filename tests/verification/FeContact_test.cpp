@@ -94,7 +94,7 @@ struct DropResult {
 
 DropResult drop(bool feProjectile) {
     const auto scene = test::makeScene(dropScene(feProjectile));
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     const double p0 = sim.totals().momentumZ;
     DropResult out;
     auto track = [&](const solver::Simulation& s) {
@@ -210,7 +210,7 @@ void expectAxisNodesOnAxis(const fe::NodeSet& nd, const std::vector<double>& r0)
 // collision (UniformFeBlowHeatsTheFrontRowsAlike); the bar is 8 %, which the +12 % fails.
 TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
     solver::Simulation sim(uniformImpactScene(false),
-                           solver::sceneLibrary(json::object(), "<test>"));
+                           scene::sceneLibrary(json::object(), "<test>"));
     const std::vector<double> z0 = sim.finiteElements()->nodes().z;
     const std::vector<double> r0 = sim.finiteElements()->nodes().r;
     test::runUntil(sim, 0.25);
@@ -263,7 +263,7 @@ TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
 // by mass (contact/ContactHeat.hpp).
 TEST(FeContact, UniformFeBlowHeatsTheFrontRowsAlike) {
     solver::Simulation sim(uniformImpactScene(false),
-                           solver::sceneLibrary(json::object(), "<test>"));
+                           scene::sceneLibrary(json::object(), "<test>"));
     const std::vector<double> z0 = sim.finiteElements()->nodes().z;
     const std::vector<double> r0 = sim.finiteElements()->nodes().r;
     test::runUntil(sim, 0.011);
@@ -308,8 +308,7 @@ TEST(FeContact, UniformFeBlowHeatsTheFrontRowsAlike) {
 // SPH first column's own axial excess drives the axis node ahead: at 0.25 us the axis
 // element has +388 % of its row's plastic strain, docs/fe-erosion.md.)
 TEST(FeContact, UniformSphBlowMovesTheStruckSurfaceUniformly) {
-    solver::Simulation sim(uniformImpactScene(true),
-                           solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(uniformImpactScene(true), scene::sceneLibrary(json::object(), "<test>"));
     const std::vector<double> z0 = sim.finiteElements()->nodes().z;
     const std::vector<double> r0 = sim.finiteElements()->nodes().r;
     const std::vector<double> flyerZ0 = sim.particles().z;

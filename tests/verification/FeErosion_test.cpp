@@ -50,7 +50,7 @@ Outcome strike(double speed, double spacing) {
            {"shape", {{"type", "plate"}, {"z_front_mm", 0.0}, {"thickness_mm", 1.0},
                       {"outer_radius_mm", 6.0}}}}}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     Outcome out;
     const double p0 = sim.totals().momentumZ;
     test::runUntil(sim, kEndTime, [&](const solver::Simulation& s) {

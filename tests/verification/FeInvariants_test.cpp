@@ -46,7 +46,7 @@ Outcome run(bool skipDormant, int threads) {
     solver::SimulationOptions options;
     options.skipDormant = skipDormant;
     solver::Simulation sim(test::makeScene(plateScene()),
-                           solver::sceneLibrary(json::object(), "<test>"), options);
+                           scene::sceneLibrary(json::object(), "<test>"), options);
     Outcome out;
     for (int k = 0; k < 400; ++k) {
         sim.advance();

@@ -65,7 +65,7 @@ json resumeScene() {
 TEST(FeResume, CheckpointedRunEndsBitForBit) {
     const json doc = resumeScene();
     const auto sc = test::makeScene(doc);
-    const auto library = solver::sceneLibrary(doc["materials"], "<test>");
+    const auto library = scene::sceneLibrary(doc["materials"], "<test>");
     solver::Simulation straight(sc, library);
     for (int k = 0; k < 150; ++k) {
         straight.advance();

@@ -45,7 +45,7 @@ void checkHugoniot(double v) {
     const double rho0 = 2.703, c0 = 5.24, s = 1.40;
     const double expectedP = rho0 * (c0 + s * up) * up;
     const auto scene = test::makeScene(plateImpact(v, 0.025, 0.12, false, 4.0));
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     test::runUntil(sim, 0.12);
     const double t = sim.time();
     const double front = (c0 + s * up) * t - up * t;
@@ -106,7 +106,7 @@ TEST(FeWaves, ElasticWaveSpeed) {
     auto doc = plateImpact(flyerSpeed, 0.025, 0.3, true, 3.0);
     doc["domain"]["radius_mm"] = 10.0;
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     double maxEnergyError = 0.0;
     auto track = [&](const solver::Simulation& s) {
         maxEnergyError = std::max(maxEnergyError, std::fabs(s.energyError()));

@@ -52,7 +52,7 @@ Outcome run(double spacing, bool skipDormant, int threads,
     const auto scene = test::makeScene(impactScene(spacing, geometry));
     solver::SimulationOptions options;
     options.skipDormant = skipDormant;
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"), options);
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"), options);
     const auto t0 = sim.totals();
     Outcome out;
     double activeSum = 0.0;
@@ -161,7 +161,7 @@ ContactOutcome runContact(bool skipDormant) {
     const auto scene = test::makeScene(doc);
     solver::SimulationOptions options;
     options.skipDormant = skipDormant;
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"), options);
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"), options);
     ContactOutcome out;
     test::runUntil(sim, 0.05, [&](const solver::Simulation& s) {
         out.contacts += s.contact()->contactCount();

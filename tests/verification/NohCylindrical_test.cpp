@@ -34,7 +34,7 @@ TEST(NohCylindrical, ShockRadiusAndPostShockDensity) {
                       {"r_min_mm", 0.0}, {"r_max_mm", radius}}},
            {"velocity", {{"r_km_s", -1.0}}}}}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     test::runUntil(sim, tEnd);
     ASSERT_NEAR(sim.time(), tEnd, 1e-9);
 

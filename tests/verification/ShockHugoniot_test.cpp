@@ -38,7 +38,7 @@ Plateau runPlateImpact(double impactSpeed, double spacing) {
            {"shape", {{"type", "rectangle"}, {"z_min_mm", 0.0}, {"z_max_mm", 2.0},
                       {"r_min_mm", 0.0}, {"r_max_mm", 4.0}}}}}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     test::runUntil(sim, 0.12);
     // The shocked target band: from 0.1 mm behind the interface to 0.1 mm before the front.
     const double us = 5.24 + 1.40 * 0.5 * impactSpeed;

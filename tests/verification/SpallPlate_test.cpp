@@ -81,7 +81,7 @@ struct PullBack {
 PullBack runSpall(double strengthGPa) {
     const auto doc = spallScene(strengthGPa);
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(doc["materials"], "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(doc["materials"], "<test>"));
     const fe::FeSolid& fe = *sim.finiteElements();
     // The target's free-surface nodes in the centre band, away from both lateral edges.
     std::vector<std::size_t> surface;

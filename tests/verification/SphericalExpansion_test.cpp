@@ -73,7 +73,7 @@ Shape expand(const std::string& material, double e0, double tEnd, Shape* initial
                    {"shape", {{"type", "sphere"}, {"center_z_mm", 0.0}, {"radius_mm", 0.5}}},
                    {"velocity", {{"z_km_s", 1.0e-3}}}}}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     auto& ps = sim.particles();
     for (std::size_t i = 0; i < ps.size(); ++i) {
         ps.e[i] = e0;

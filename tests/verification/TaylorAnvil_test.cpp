@@ -216,7 +216,7 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
     }
     const auto scene = test::makeScene(doc);
     solver::Simulation sim(scene,
-                           solver::sceneLibrary(doc.value("materials", json::object()), "<test>"));
+                           scene::sceneLibrary(doc.value("materials", json::object()), "<test>"));
     Tension tension;
     test::runUntil(sim, kEndTimeUs, [&](const solver::Simulation& s) {
         if (feRod(s)) {

@@ -49,7 +49,7 @@ Lattice pull(double epsilon) {
         {"domain", {{"radius_mm", 5.0}, {"z_min_mm", -5.0}, {"z_max_mm", 5.0}}},
         {"bodies", {block("left", -0.5, 0.0, -0.3), block("right", 0.0, 0.5, 0.3)}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     Lattice out;
     test::runUntil(sim, 1.5, [&](const solver::Simulation& s) {
         out.energyError = std::max(out.energyError, std::fabs(s.energyError()));

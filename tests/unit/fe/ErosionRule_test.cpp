@@ -39,7 +39,7 @@ Outcome run(double speed, double time) {
                          {"shape", {{"type", "rectangle"}, {"z_min_mm", 0.0}, {"z_max_mm", 0.2},
                                     {"r_min_mm", 1.0}, {"r_max_mm", 1.2}}}}}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     auto& fe = *sim.finiteElements();
     auto& el = fe.elements();
     auto& nd = fe.nodes();

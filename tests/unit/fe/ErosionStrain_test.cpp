@@ -159,7 +159,7 @@ double ringingStrain(const std::string& measure, double time) {
                                      {"r_min_mm", 1.0},
                                      {"r_max_mm", 1.2}}}}}}};
     solver::Simulation sim(test::makeScene(doc),
-                           solver::sceneLibrary(nlohmann::json::object(), "<test>"));
+                           scene::sceneLibrary(nlohmann::json::object(), "<test>"));
     auto& nd = sim.finiteElements()->nodes();
     // v_z = 0.002 z km/s: a strain rate of 0.002/us, elastic (the bar's strain amplitude is
     // about 0.002 * 2 mm / (5 km/s * pi) ~ 2.5e-4, far below yield ~ 4e-3).

@@ -84,7 +84,7 @@ TEST(BodyLayout, AThinSphPlateIsRefusedAThinFeLayerIsMeshed) {
     thin["bodies"][1]["discretization"] = "fe";
     EXPECT_EQ(refusal(thin), "");
     const auto scene = test::makeScene(thin);
-    solver::Simulation sim(scene, solver::sceneLibrary(nlohmann::json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(nlohmann::json::object(), "<test>"));
     ASSERT_NE(sim.finiteElements(), nullptr);
     EXPECT_EQ(sim.finiteElements()->elements().size(), 2u * 50u); // 2 through 0.15 mm, 50 in r
 }

@@ -35,7 +35,7 @@ std::string stopOf(double slabSpeed) {
                        {slab, test::plateBody("bumper", "bumper", 0.0, 0.2, 1.0),
                         test::plateBody("wall", "rear_wall", 1.0, 0.2, 1.0)}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     test::runUntil(sim, 1.0);
     return sim.stopReason().value_or("none");
 }
@@ -76,7 +76,7 @@ SlabOnWall slabOnWall() {
                        {slab, test::plateBody("bumper", "bumper", 0.0, 0.2, 1.0),
                         test::plateBody("wall", "rear_wall", 0.74, 0.8, 1.0)}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     SlabOnWall result;
     bool sampled = false;
     test::runUntil(sim, 1.5, [&](const solver::Simulation& s) {
@@ -127,7 +127,7 @@ TEST(StopRules, NoNewPenetrationStillFiresWhenNothingMovesTowardTheRearWall) {
                         test::plateBody("layer", "core_layer", 0.74, 0.8, 2.0, 1.4), ejecta,
                         test::plateBody("wall", "rear_wall", 2.0, 0.2, 1.0)}}};
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, solver::sceneLibrary(json::object(), "<test>"));
+    solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"));
     test::runUntil(sim, 3.0);
     EXPECT_EQ(sim.stopReason().value_or("none"), "no_new_penetration")
         << "at " << sim.time() << ", last progress " << sim.lastProgressTime();

@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-namespace hvi::solver {
+namespace hvi::material {
 
 /// What one body needs from its material, chosen once.
 struct BodyMaterial {
@@ -75,4 +75,4 @@ private:
     std::vector<BodyMaterial> m_bodies;
 };
 
-} // namespace hvi::solver
+} // namespace hvi::material

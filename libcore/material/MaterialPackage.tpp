@@ -1,32 +1,24 @@
-#include "solver/MaterialPackage.hpp"
+// The template definitions of MaterialPackage (material/MaterialPackage.hpp), included by
+// the files that instantiate them for their point sets: sph/ParticleMaterial.cpp and
+// fe/ElementMaterial.cpp. This folder knows no point set.
+#pragma once
+
+#include "material/MaterialPackage.hpp"
 
 #include "core/Parallel.hpp"
-#include "fe/ElementRates.hpp"
-#include "fe/FeMesh.hpp"
 #include "material/strength/JaumannRate.hpp"
 #include "material/strength/RadialReturn.hpp"
-#include "sph/ParticleSet.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <variant>
 
-namespace hvi::solver {
+namespace hvi::material {
 
 using material::StressDeviator;
 
-double densityCeiling(const material::MaterialSpec& spec) {
-    if (const auto* mg = std::get_if<material::MieGruneisen>(&spec.eos)) {
-        const double sm1 = mg->hugoniotSlope - 1.0;
-        if (sm1 > 0.0) {
-            return mg->referenceDensity * (1.0 + 0.5 / sm1);
-        }
-    }
-    return std::numeric_limits<double>::infinity();
-}
-
-namespace {
+namespace detail {
 
 /// p and cs of points [first, last) of `items` (or of the index range itself when `items` is
 /// null) for one body, with its EOS chosen once.
@@ -59,14 +51,14 @@ void pressureOf(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdi
     });
 }
 
-} // namespace
+} // namespace detail
 
 template <class Points>
 void MaterialPackage::updatePressure(Points& ps) const {
     for (const auto& body : m_bodies) {
         std::visit(
             [&](const auto& eos) {
-                pressureOf(ps, body, eos, static_cast<std::ptrdiff_t>(body.first),
+                detail::pressureOf(ps, body, eos, static_cast<std::ptrdiff_t>(body.first),
                            static_cast<std::ptrdiff_t>(body.first + body.count), nullptr);
             },
             body.spec->eos);
@@ -86,7 +78,7 @@ void MaterialPackage::updatePressure(Points& ps, std::span<const int32_t> items)
             std::lower_bound(lo, items.end(), static_cast<int32_t>(body.first + body.count));
         std::visit(
             [&](const auto& eos) {
-                pressureOf(ps, body, eos, lo - items.begin(), hi - items.begin(), items.data());
+                detail::pressureOf(ps, body, eos, lo - items.begin(), hi - items.begin(), items.data());
             },
             body.spec->eos);
     }
@@ -172,18 +164,4 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
     });
 }
 
-// The two kinds of material points.
-template void MaterialPackage::updatePressure(sph::ParticleSet&) const;
-template void MaterialPackage::updatePressure(fe::ElementSet&) const;
-template void MaterialPackage::updatePressure(sph::ParticleSet&, std::span<const int32_t>) const;
-template void MaterialPackage::updatePressure(fe::ElementSet&, std::span<const int32_t>) const;
-template void MaterialPackage::addStressRates(const sph::ParticleSet&, std::span<const int32_t>,
-                                              sph::ParticleRates&) const;
-template void MaterialPackage::addStressRates(const fe::ElementSet&, std::span<const int32_t>,
-                                              fe::ElementRates&) const;
-template void MaterialPackage::applyPlasticity(sph::ParticleSet&, const sph::ParticleRates&,
-                                               std::span<const int32_t>, double) const;
-template void MaterialPackage::applyPlasticity(fe::ElementSet&, const fe::ElementRates&,
-                                               std::span<const int32_t>, double) const;
-
-} // namespace hvi::solver
+} // namespace hvi::material

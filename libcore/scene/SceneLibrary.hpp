@@ -5,9 +5,9 @@
 #include "material/MaterialLibrary.hpp"
 #include "scene/Scene.hpp"
 
-namespace hvi::solver {
+namespace hvi::scene {
 
 material::MaterialLibrary sceneLibrary(const nlohmann::json& sceneMaterials,
                                        const std::string& file);
 
-} // namespace hvi::solver
+} // namespace hvi::scene

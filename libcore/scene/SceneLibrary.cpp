@@ -1,8 +1,8 @@
-#include "solver/SceneLibrary.hpp"
+#include "scene/SceneLibrary.hpp"
 
 #include <nlohmann/json.hpp>
 
-namespace hvi::solver {
+namespace hvi::scene {
 
 material::MaterialLibrary sceneLibrary(const nlohmann::json& sceneMaterials,
                                        const std::string& file) {
@@ -15,4 +15,4 @@ material::MaterialLibrary sceneLibrary(const nlohmann::json& sceneMaterials,
     return library;
 }
 
-} // namespace hvi::solver
+} // namespace hvi::scene

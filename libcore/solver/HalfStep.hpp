@@ -1,0 +1,66 @@
+// The particles' half-step state of the kick-drift-kick leapfrog (solver/Simulation.hpp): one
+// array per integrated field (sph::kIntegratedFields, and kIntegratedStrengthFields with
+// strength), so a field added to those lists is integrated without touching the loops.
+//
+//   kick:    half := state + dt/2 rate        (first half kick, rates of step n)
+//   predict: state := half + dt/2 rate        (the end-of-step prediction, and the second
+//                                              half kick with the rates there)
+//   hold:    half := state                    (a particle at rest, or one just created)
+#pragma once
+
+#include "contact/ContactPoints.hpp"
+#include "sph/ParticleSet.hpp"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace hvi::solver {
+
+// contactView() hands contact the first three arrays: they must be vz, vr and e.
+static_assert(sph::kIntegratedFields[0].state == &sph::ParticleSet::vz &&
+              sph::kIntegratedFields[1].state == &sph::ParticleSet::vr &&
+              sph::kIntegratedFields[2].state == &sph::ParticleSet::e);
+
+class HalfStep {
+public:
+    static constexpr std::size_t kFields =
+        sph::kIntegratedFields.size() + sph::kIntegratedStrengthFields.size();
+
+    /// The arrays of one step, as raw pointers (valid until the particle set is resized).
+    struct Lanes {
+        std::size_t count = 0; ///< fields integrated (without strength, the first five)
+        std::array<double*, kFields> state{}, half{};
+        std::array<const double*, kFields> rate{};
+
+        void kick(std::size_t i, double halfDt) const {
+            for (std::size_t f = 0; f < count; ++f) {
+                half[f][i] = state[f][i] + halfDt * rate[f][i];
+            }
+        }
+        void predict(std::size_t i, double halfDt) const {
+            for (std::size_t f = 0; f < count; ++f) {
+                state[f][i] = half[f][i] + halfDt * rate[f][i];
+            }
+        }
+        void hold(std::size_t i) const {
+            for (std::size_t f = 0; f < count; ++f) {
+                half[f][i] = state[f][i];
+            }
+        }
+    };
+
+    /// Every half-step array := the particles' state (the start of a run, or a resume).
+    void reset(const sph::ParticleSet& ps);
+    Lanes lanes(sph::ParticleSet& ps, const sph::ParticleRates& rates);
+
+    std::vector<double>& vz() { return m_half[0]; }
+    std::vector<double>& vr() { return m_half[1]; }
+    /// The half-step velocities and energy contact constrains.
+    contact::ParticleHalfStep contactView() { return {&m_half[0], &m_half[1], &m_half[2]}; }
+
+private:
+    std::array<std::vector<double>, kFields> m_half;
+};
+
+} // namespace hvi::solver
