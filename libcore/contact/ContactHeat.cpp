@@ -10,8 +10,9 @@ namespace {
 /// heat raises each by the same amount).
 void heatNode(const ContactPoints& pts, std::size_t node, double specificEnergy) {
     const auto& s = pts.surface;
-    for (int32_t k = s.nodeElementOffset[node]; k < s.nodeElementOffset[node + 1]; ++k) {
-        pts.el.e[static_cast<std::size_t>(s.nodeElements[static_cast<std::size_t>(k)])] +=
+    const auto& nc = s.nodeCorners;
+    for (int64_t k = nc.offset[node]; k < nc.offset[node + 1]; ++k) {
+        pts.el.e[fe::NodeCorners::elementOf(nc.corners[static_cast<std::size_t>(k)])] +=
             specificEnergy;
     }
 }
@@ -81,8 +82,7 @@ void markContacts(const ContactPoints& pts, const ConstraintSet& set, StepContac
             if (con.target >= 0) {
                 for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
                     if (set.footNodes[q].weight > 0.0) {
-                        step.pressedAsMaster[static_cast<std::size_t>(set.footNodes[q].index)] =
-                            1;
+                        step.pressedAsMaster[static_cast<std::size_t>(set.footNodes[q].index)] = 1;
                     }
                 }
             }
@@ -100,7 +100,8 @@ void shareHeat(const ContactPoints& pts, const ConstraintSet& set,
         if (!con.kicked || !collision) {
             continue;
         }
-        const double heat = -0.5 * con.impulse * (con.approachBefore + normalVelocity(pts, set, con));
+        const double heat =
+            -0.5 * con.impulse * (con.approachBefore + normalVelocity(pts, set, con));
         energy.dissipated += heat;
         const double slaveElementMass = isParticle ? 0.0 : pts.surface.nodeElementMass(pts.el, idx);
         const bool slaveIsFree = !isParticle && slaveElementMass <= 0.0;

@@ -25,8 +25,8 @@
 // more than 45 degrees; the chain's end), so the footprint never wraps round a corner onto a face
 // that does not meet the particle. The shares sum to 1. Why: a point contact hands a particle's
 // whole impulse to the two nodes of the segment under its centre; an expanded particle on the axis
-// then loads the disc of one element with the areal mass of a solid slug (docs/fe-erosion.md, "What
-// fails the axis column").
+// then loads the disc of one element with the areal mass of a solid slug
+// (docs/notebook/fe-erosion.md, "What fails the axis column").
 //
 // Units: mm (lengths); the shares are dimensionless.
 #pragma once

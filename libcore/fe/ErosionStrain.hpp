@@ -6,7 +6,7 @@
 // instantaneous, computed each cycle from the element's current total strain. The
 // incremental form counts every to and fro of an element that rings elastically: in the
 // 1.7 mm rear wall of the 3.125 mm Whipple it reached 1.27 where the element's true strain was
-// 0.016 (docs/fe-erosion.md), so the whole wall crept towards the erosion factor with no
+// 0.016 (docs/notebook/fe-erosion.md), so the whole wall crept towards the erosion factor with no
 // deformation at all. Here the instantaneous form is the von Mises equivalent of the
 // logarithmic (Hencky) strain of the mean deformation gradient,
 //   F = sum_a x_a (x) dN_a/dX   (in-plane, at the reference centroid; exact for linear fields),

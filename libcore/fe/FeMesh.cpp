@@ -61,8 +61,7 @@ BodyMesh meshBody(const scene::Body& body, int32_t bodyIndex, double rho0, doubl
         for (std::size_t ir = 0; ir < nr; ++ir) {
             // Counter-clockwise with z to the right and r up.
             const std::array<int32_t, 4> corner{nodeIndex(iz, ir), nodeIndex(iz + 1, ir),
-                                                nodeIndex(iz + 1, ir + 1),
-                                                nodeIndex(iz, ir + 1)};
+                                                nodeIndex(iz + 1, ir + 1), nodeIndex(iz, ir + 1)};
             QuadState q;
             for (int a = 0; a < 4; ++a) {
                 const auto n = static_cast<std::size_t>(corner[static_cast<std::size_t>(a)]);
@@ -70,8 +69,7 @@ BodyMesh meshBody(const scene::Body& body, int32_t bodyIndex, double rho0, doubl
                 q.r[static_cast<std::size_t>(a)] = nodes.r[n];
             }
             const QuadGeometry g = quadGeometry(q);
-            const double volume =
-                axisymmetric ? 2.0 * units::kPi * g.centroidR * g.area : g.area;
+            const double volume = axisymmetric ? 2.0 * units::kPi * g.centroidR * g.area : g.area;
             const double m = rho0 * volume;
             for (const int32_t n : corner) {
                 elements.connectivity.push_back(n);
@@ -96,6 +94,34 @@ BodyMesh meshBody(const scene::Body& body, int32_t bodyIndex, double rho0, doubl
     }
     mesh.elementCount = elements.size() - mesh.firstElement;
     return mesh;
+}
+
+NodeCorners NodeCorners::of(const ElementSet& el, std::size_t nodeCount, bool aliveOnly) {
+    NodeCorners t;
+    t.offset.assign(nodeCount + 1, 0);
+    for (std::size_t i = 0; i < el.size(); ++i) {
+        if (aliveOnly && !el.alive[i]) {
+            continue;
+        }
+        for (int a = 0; a < 4; ++a) {
+            ++t.offset[static_cast<std::size_t>(el.node(i, a)) + 1];
+        }
+    }
+    for (std::size_t n = 0; n < nodeCount; ++n) {
+        t.offset[n + 1] += t.offset[n];
+    }
+    t.corners.assign(static_cast<std::size_t>(t.offset[nodeCount]), 0);
+    std::vector<int64_t> fill(t.offset.begin(), t.offset.end() - 1);
+    for (std::size_t i = 0; i < el.size(); ++i) {
+        if (aliveOnly && !el.alive[i]) {
+            continue;
+        }
+        for (int a = 0; a < 4; ++a) {
+            const auto n = static_cast<std::size_t>(el.node(i, a));
+            t.corners[static_cast<std::size_t>(fill[n]++)] = static_cast<int32_t>(4 * i) + a;
+        }
+    }
+    return t;
 }
 
 } // namespace hvi::fe

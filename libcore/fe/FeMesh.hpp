@@ -23,30 +23,30 @@
 namespace hvi::fe {
 
 struct NodeSet {
-    std::vector<double> z, r;         ///< position [mm]
-    std::vector<double> vz, vr;       ///< velocity [km/s]
-    std::vector<double> mass;         ///< lumped mass [mg] (an eroded element that becomes a
-                                      ///< particle takes its share; 0: the node is gone)
-    std::vector<double> fz, fr;       ///< force of the current step [mg mm/us^2 = kN]
-    std::vector<int32_t> body;        ///< scene body index
-    std::vector<uint8_t> alive;       ///< 0 once deleted (runaway, left the domain)
-    std::vector<uint8_t> onAxis;      ///< axisymmetric: started at r = 0, kept there
+    std::vector<double> z, r;          ///< position [mm]
+    std::vector<double> vz, vr;        ///< velocity [km/s]
+    std::vector<double> mass;          ///< lumped mass [mg] (an eroded element that becomes a
+                                       ///< particle takes its share; 0: the node is gone)
+    std::vector<double> fz, fr;        ///< force of the current step [mg mm/us^2 = kN]
+    std::vector<int32_t> body;         ///< scene body index
+    std::vector<uint8_t> alive;        ///< 0 once deleted (runaway, left the domain)
+    std::vector<uint8_t> onAxis;       ///< axisymmetric: started at r = 0, kept there
     std::vector<int32_t> elementCount; ///< alive elements using the node (0: a free node)
 
     std::size_t size() const { return z.size(); }
 };
 
 struct ElementSet {
-    std::vector<int32_t> connectivity; ///< 4 node indices per element, counter-clockwise
-    std::vector<int32_t> body;         ///< scene body index
-    std::vector<uint8_t> alive;        ///< 0 once eroded
-    std::vector<double> mass;          ///< [mg]
-    std::vector<double> rho, e, p, cs; ///< g/cm^3, MJ/kg, GPa, km/s
-    std::vector<double> q;             ///< artificial bulk viscosity pressure [GPa]
-    std::vector<double> szz, srr, srz; ///< stress deviator [GPa] (empty without strength)
-    std::vector<double> plasticStrain; ///< [-] (empty without strength)
-    std::vector<double> damage;        ///< [-] (empty without strength)
-    std::vector<double> tensionOnset;  ///< damage state (JohnsonCookDamage::damageAfter) [-]
+    std::vector<int32_t> connectivity;   ///< 4 node indices per element, counter-clockwise
+    std::vector<int32_t> body;           ///< scene body index
+    std::vector<uint8_t> alive;          ///< 0 once eroded
+    std::vector<double> mass;            ///< [mg]
+    std::vector<double> rho, e, p, cs;   ///< g/cm^3, MJ/kg, GPa, km/s
+    std::vector<double> q;               ///< artificial bulk viscosity pressure [GPa]
+    std::vector<double> szz, srr, srz;   ///< stress deviator [GPa] (empty without strength)
+    std::vector<double> plasticStrain;   ///< [-] (empty without strength)
+    std::vector<double> damage;          ///< [-] (empty without strength)
+    std::vector<double> tensionOnset;    ///< damage state (JohnsonCookDamage::damageAfter) [-]
     std::vector<double> geometricStrain; ///< accumulated effective total strain [-]
 
     std::size_t size() const { return body.size(); }
@@ -54,7 +54,9 @@ struct ElementSet {
     /// Allocates the strength arrays (zero) for every element.
     void enableStrength();
     /// Node a (0..3) of element i.
-    int32_t node(std::size_t i, int a) const { return connectivity[4 * i + static_cast<std::size_t>(a)]; }
+    int32_t node(std::size_t i, int a) const {
+        return connectivity[4 * i + static_cast<std::size_t>(a)];
+    }
 
 private:
     bool m_withStrength = false;
@@ -88,6 +90,18 @@ inline constexpr std::array<Field<ElementSet>, 6> kElementStrengthFields{{
 }};
 
 /// The index ranges one body occupies.
+/// Which element corners meet at each node (CSR): corners[offset[n] .. offset[n + 1]) are the
+/// slots 4 e + a (element e, corner a) at node n, in element order. The FE update gathers
+/// corner forces through it (over every element); the contact surface shares heat and mass
+/// among a node's elements through it (over the alive ones).
+struct NodeCorners {
+    std::vector<int64_t> offset; ///< nodes + 1
+    std::vector<int32_t> corners;
+
+    static NodeCorners of(const ElementSet& elements, std::size_t nodeCount, bool aliveOnly);
+    static std::size_t elementOf(int32_t corner) { return static_cast<std::size_t>(corner) / 4; }
+};
+
 struct BodyMesh {
     std::size_t firstNode = 0, nodeCount = 0;
     std::size_t firstElement = 0, elementCount = 0;

@@ -65,24 +65,8 @@ FeSolid::FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
     m_volumetricRate.assign(ne, 0.0);
     m_volume.assign(ne, 0.0);
     m_erode.assign(ne, 0);
-    // Node -> element adjacency.
-    m_nodeElementOffset.assign(nn + 1, 0);
-    for (const int32_t n : m_elements.connectivity) {
-        ++m_nodeElementOffset[static_cast<std::size_t>(n) + 1];
-    }
-    for (std::size_t n = 0; n < nn; ++n) {
-        m_nodeElementOffset[n + 1] += m_nodeElementOffset[n];
-    }
-    m_nodeElements.assign(m_elements.connectivity.size(), 0);
-    std::vector<int64_t> fill(m_nodeElementOffset.begin(), m_nodeElementOffset.end() - 1);
-    for (std::size_t i = 0; i < ne; ++i) {
-        for (int a = 0; a < 4; ++a) {
-            const auto n = static_cast<std::size_t>(m_elements.node(i, a));
-            // Slot = 4 * element + corner, so the gather knows which corner force to take.
-            m_nodeElements[static_cast<std::size_t>(fill[n]++)] =
-                static_cast<int32_t>(4 * i + static_cast<std::size_t>(a));
-        }
-    }
+    // Slot = 4 * element + corner, so the gather knows which corner force to take.
+    m_nodeCorners = NodeCorners::of(m_elements, nn, false);
     for (std::size_t i = 0; i < ne; ++i) {
         const QuadGeometry g = quadGeometry(gather(m_nodes, m_elements, i));
         m_volume[i] = sweptVolume(g, m_options.axisymmetric);
@@ -132,8 +116,8 @@ void FeSolid::selectEvaluated() {
             continue;
         }
         m_nodeAwake[n] = 1;
-        for (int64_t k = m_nodeElementOffset[n]; k < m_nodeElementOffset[n + 1]; ++k) {
-            const auto e = m_nodeElements[static_cast<std::size_t>(k)] / 4;
+        for (int64_t k = m_nodeCorners.offset[n]; k < m_nodeCorners.offset[n + 1]; ++k) {
+            const auto e = m_nodeCorners.corners[static_cast<std::size_t>(k)] / 4;
             if (!m_elementAwake[static_cast<std::size_t>(e)]) {
                 m_elementAwake[static_cast<std::size_t>(e)] = 1;
                 m_woken.push_back(e);
@@ -235,13 +219,6 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
     const bool axi = m_options.axisymmetric;
     const bool strength = el.hasStrength();
     const double cq = m_options.bulkQuadratic, cl = m_options.bulkLinear;
-    // What the energy update needs of the step's start and of step 1, per tile slot: kept on
-    // the stack (in cache), not in element arrays that every update would stream through.
-    struct StepStart {
-        double energy, pressure, szz, srr, srz;
-        double volumeChange;  ///< [mm^3]
-        double hourglassWork; ///< of the hourglass force over the step [J]
-    };
     std::array<StepStart, kTileSize> start;
 
     // 1-2: kinematics at mid-step, density from the end-of-step swept volume, bulk viscosity,
@@ -350,11 +327,22 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
         materials.applyPlasticity(el, m_rates, tile, dt);
     }
 
-    // 4: energy, with the pressure work at the mean of the start and a predicted end pressure:
-    // a predictor with the start pressure, then the correction -(p_pred - p_start) dV / 2m.
+    updateEnergy(tile, start.data(), dt, materials);
+
+    // 6: forces at the end-of-step geometry (an element about to erode holds none).
+    for (const int32_t element : tile) {
+        elementForces(static_cast<std::size_t>(element), vote);
+    }
+}
+
+void FeSolid::updateEnergy(std::span<const int32_t> tile, const StepStart* start, double dt,
+                           const material::MaterialPackage& materials) {
+    auto& el = m_elements;
+    const bool strength = el.hasStrength();
+    // A predictor with the start pressure, then the correction -(p_pred - p_start) dV / 2m.
     for (std::size_t k = 0; k < tile.size(); ++k) {
         const auto i = static_cast<std::size_t>(tile[k]);
-        StepStart& s0 = start[k];
+        const StepStart& s0 = start[k];
         if (m_erode[i]) {
             continue;
         }
@@ -377,7 +365,7 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
     materials.updatePressure(el, tile);
     for (std::size_t k = 0; k < tile.size(); ++k) {
         const auto i = static_cast<std::size_t>(tile[k]);
-        StepStart& s0 = start[k];
+        const StepStart& s0 = start[k];
         if (m_erode[i]) {
             continue;
         }
@@ -389,11 +377,6 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
         }
     }
     materials.updatePressure(el, tile);
-
-    // 6: forces at the end-of-step geometry (an element about to erode holds none).
-    for (const int32_t element : tile) {
-        elementForces(static_cast<std::size_t>(element), vote);
-    }
 }
 
 void FeSolid::erode(std::size_t i) {
@@ -535,8 +518,9 @@ void FeSolid::finishAssembly(const std::vector<StepVote>& votes) {
     for (std::size_t g = 0; g < gatherCount; ++g) {
         const std::size_t n = all ? g : static_cast<std::size_t>(m_gatherNodes[g]);
         double fz = 0.0, fr = 0.0;
-        for (int64_t k = m_nodeElementOffset[n]; k < m_nodeElementOffset[n + 1]; ++k) {
-            const auto slot = static_cast<std::size_t>(m_nodeElements[static_cast<std::size_t>(k)]);
+        for (int64_t k = m_nodeCorners.offset[n]; k < m_nodeCorners.offset[n + 1]; ++k) {
+            const auto slot =
+                static_cast<std::size_t>(m_nodeCorners.corners[static_cast<std::size_t>(k)]);
             fz += m_elementForce[2 * slot];
             fr += m_elementForce[2 * slot + 1];
         }

@@ -152,9 +152,21 @@ private:
     void admit(int32_t element);
     /// Adds an element's nodes to the gathered set.
     void gatherNodesOf(std::size_t element);
+    /// What the energy update needs of an element's step start and of steps 1-2, per tile
+    /// slot: kept on the stack (in cache), not in element arrays that every update would
+    /// stream through.
+    struct StepStart {
+        double energy, pressure, szz, srr, srz;
+        double volumeChange;  ///< [mm^3]
+        double hourglassWork; ///< of the hourglass force over the step [J]
+    };
     /// Steps 1-4 and 6 of update() for the listed elements (ascending).
     void updateTile(std::span<const int32_t> tile, double dt,
                     const material::MaterialPackage& materials, StepVote& vote);
+    /// Step 4: the energy with the pressure work at the mean of the start and a predicted end
+    /// pressure; then erosion of the elements that failed completely.
+    void updateEnergy(std::span<const int32_t> tile, const StepStart* start, double dt,
+                      const material::MaterialPackage& materials);
     /// Element forces at the current geometry and state, gathered per node; the time-step vote.
     void assembleForces();
     /// Element i's corner forces (zeros when it is eroded or about to be) and its vote.
@@ -172,8 +184,7 @@ private:
     std::vector<double> m_strainRatioLimit; ///< stretchRatioLimit(erosion factor) per body
     // Node -> elements adjacency (CSR, ascending element order): forces are gathered per node
     // in a fixed order, so the sums do not depend on the thread count.
-    std::vector<int64_t> m_nodeElementOffset;
-    std::vector<int32_t> m_nodeElements;
+    NodeCorners m_nodeCorners;              ///< of every element
     std::vector<double> m_elementForce;     ///< 8 per element: (fz, fr) of corners 0..3
     std::vector<double> m_hourglassRate;    ///< c_hg per element [mg/us], set in update()
     std::vector<int32_t> m_evaluated;       ///< alive, non-dormant elements of this update

@@ -20,8 +20,8 @@ bool SurfaceTopology::update(const ElementSet& el, const NodeSet& nd, bool axisy
 
 double SurfaceTopology::nodeElementMass(const ElementSet& el, std::size_t node) const {
     double mass = 0.0;
-    for (int32_t k = nodeElementOffset[node]; k < nodeElementOffset[node + 1]; ++k) {
-        mass += el.mass[static_cast<std::size_t>(nodeElements[static_cast<std::size_t>(k)])];
+    for (int64_t k = nodeCorners.offset[node]; k < nodeCorners.offset[node + 1]; ++k) {
+        mass += el.mass[NodeCorners::elementOf(nodeCorners.corners[static_cast<std::size_t>(k)])];
     }
     return mass;
 }
@@ -62,27 +62,7 @@ void SurfaceTopology::rebuild(const ElementSet& el, const NodeSet& nd, bool axis
     if (m_edgeTableElements != el.size()) {
         buildEdgeTable(el);
     }
-    nodeElementOffset.assign(nd.size() + 1, 0);
-    for (std::size_t i = 0; i < el.size(); ++i) {
-        if (el.alive[i]) {
-            for (int a = 0; a < 4; ++a) {
-                ++nodeElementOffset[static_cast<std::size_t>(el.node(i, a)) + 1];
-            }
-        }
-    }
-    for (std::size_t n = 0; n < nd.size(); ++n) {
-        nodeElementOffset[n + 1] += nodeElementOffset[n];
-    }
-    nodeElements.resize(static_cast<std::size_t>(nodeElementOffset[nd.size()]));
-    std::vector<int32_t> fill(nodeElementOffset.begin(), nodeElementOffset.end() - 1);
-    for (std::size_t i = 0; i < el.size(); ++i) {
-        if (el.alive[i]) {
-            for (int a = 0; a < 4; ++a) {
-                const auto n = static_cast<std::size_t>(el.node(i, a));
-                nodeElements[static_cast<std::size_t>(fill[n]++)] = static_cast<int32_t>(i);
-            }
-        }
-    }
+    nodeCorners = NodeCorners::of(el, nd.size(), true);
     segA.clear();
     segB.clear();
     segBody.clear();

@@ -30,9 +30,8 @@ public:
     /// The chains: the segment starting where each ends, ending where each starts (-1: none,
     /// or a pinch where several meet).
     std::vector<int32_t> segNext, segPrev;
-    /// The alive elements of node n: nodeElements[nodeElementOffset[n] ..
-    /// nodeElementOffset[n + 1]) in element order (none: a free node).
-    std::vector<int32_t> nodeElementOffset, nodeElements;
+    /// The corners of the alive elements at each node, in element order (none: a free node).
+    NodeCorners nodeCorners;
     /// 1 where a node lies on a segment of its own body.
     std::vector<uint8_t> surfaceNode;
 

@@ -112,178 +112,13 @@ std::string formatDuration(double seconds) {
     return buf;
 }
 
-/// A checkpoint array per listed field, named prefix + the field's name.
-template <class Set, std::size_t N>
-void putFields(io::CheckpointState& s, std::string_view prefix, const Set& set,
-               const std::array<Field<Set>, N>& fields) {
-    for (const auto& f : fields) {
-        s.doubles[std::string(prefix) + std::string(f.name)] = set.*f.member;
-    }
-}
-
-/// The listed fields back from a checkpoint; a missing array or one of another size is an
-/// input error.
-void takeArray(const io::CheckpointState& s, const std::string& name, std::vector<double>& into) {
-    auto it = s.doubles.find(name);
-    if (it == s.doubles.end() || it->second.size() != into.size()) {
-        throw InputError("<checkpoint>", "/" + name, "missing or wrong size",
-                         "a checkpoint written by this version of hvi-run");
-    }
-    into = it->second;
-}
-
-template <class Set, std::size_t N>
-void takeFields(const io::CheckpointState& s, std::string_view prefix, Set& set,
-                const std::array<Field<Set>, N>& fields) {
-    for (const auto& f : fields) {
-        takeArray(s, std::string(prefix) + std::string(f.name), set.*f.member);
-    }
-}
-
 } // namespace
 
 io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError) {
-    const auto& ps = sim.particles();
     io::CheckpointState s;
-    s.timeUs = sim.time();
-    s.step = sim.step();
-    putFields(s, "", ps, sph::kParticleStateFields);
-    if (ps.hasStrength()) {
-        putFields(s, "", ps, sph::kParticleStrengthFields);
-    }
-    s.ints["body"] = ps.body;
-    s.ints["alive"] = std::vector<int32_t>(ps.alive.begin(), ps.alive.end());
-    // The rates of the last step: the next step's first kick uses them, and they belong to
-    // the step's predicted state, so they cannot be recomputed from the final one.
-    const auto& rt = sim.rates();
-    putFields(s, "rate_", rt, sph::kRateFields);
-    if (ps.hasStrength()) {
-        putFields(s, "rate_", rt, sph::kStrengthRateFields);
-    }
-    if (const fe::FeSolid* fe = sim.finiteElements()) {
-        const auto& nd = fe->nodes();
-        const auto& el = fe->elements();
-        putFields(s, "node_", nd, fe::kNodeStateFields);
-        s.ints["node_alive"] = std::vector<int32_t>(nd.alive.begin(), nd.alive.end());
-        putFields(s, "element_", el, fe::kElementStateFields);
-        s.doubles["element_volumetric_rate"] = fe->volumetricRate();
-        s.doubles["element_hourglass_rate"] = fe->hourglassRate();
-        const auto& flags = sim.contact()->contactFlags();
-        s.ints["contact_flags"] = std::vector<int32_t>(flags.begin(), flags.end());
-        s.ints["element_alive"] = std::vector<int32_t>(el.alive.begin(), el.alive.end());
-        if (el.hasStrength()) {
-            putFields(s, "element_", el, fe::kElementStrengthFields);
-        }
-    }
-    const Totals t = sim.totals();
-    s.extra = {{"dt_us", sim.lastDt()},
-               {"initial_energy_J", sim.initialEnergy()},
-               // Without the eroded elements' and the free nodes' shares, which are restored
-               // with the FE and contact state.
-               {"deleted_energy_J",
-                t.deletedEnergy - (sim.finiteElements() ? sim.finiteElements()->erodedEnergy() +
-                                                              sim.contact()->freeNodeHeat()
-                                                        : 0.0)},
-               {"deleted_mass_mg", t.deletedMass},
-               {"deleted_momentum_z", t.deletedMomentumZ},
-               {"runaway_deleted", sim.runawayDeleted()},
-               {"out_of_domain_deleted", sim.outOfDomainDeleted()},
-               {"max_energy_error", maxEnergyError},
-               {"particle_count", ps.size()}};
-    if (const fe::FeSolid* fe = sim.finiteElements()) {
-        s.extra["node_count"] = fe->nodes().size();
-        s.extra["element_count"] = fe->elements().size();
-        s.extra["eroded_energy_J"] = fe->erodedEnergy();
-        s.extra["eroded_elements"] = fe->erodedCount();
-        s.extra["contact_dt_us"] = sim.contact()->stableTimeStep();
-        s.extra["contact_heat_J"] = sim.contact()->dissipatedEnergy();
-        s.extra["free_node_heat_J"] = sim.contact()->freeNodeHeat();
-        s.extra["fe_dt_us"] = fe->stableTimeStep();
-        s.extra["fe_dt_element"] = fe->limitingElement();
-    }
-    s.extra["sph_dt_us"] = sim.sphStableTimeStep();
-    s.extra["sph_dt_particle"] = sim.dtLimitingParticle();
+    sim.save(s);
+    s.extra["max_energy_error"] = maxEnergyError;
     return s;
-}
-
-void restoreCheckpoint(Simulation& sim, const io::CheckpointState& s) {
-    auto& ps = sim.particles();
-    if (s.extra.value("particle_count", std::size_t{0}) != ps.size()) {
-        throw InputError("<checkpoint>", "/particle_count",
-                         "the checkpoint holds " +
-                             std::to_string(s.extra.value("particle_count", std::size_t{0})) +
-                             " particles, the scene makes " + std::to_string(ps.size()),
-                         "a checkpoint of the same scene and resolution");
-    }
-    takeFields(s, "", ps, sph::kParticleStateFields);
-    if (ps.hasStrength()) {
-        takeFields(s, "", ps, sph::kParticleStrengthFields);
-    }
-    auto takeFlags = [&](const char* name, std::vector<uint8_t>& into) {
-        auto it = s.ints.find(name);
-        if (it == s.ints.end() || it->second.size() != into.size()) {
-            throw InputError("<checkpoint>", std::string("/") + name, "missing or wrong size",
-                             "a checkpoint written by this version of hvi-run");
-        }
-        for (std::size_t i = 0; i < into.size(); ++i) {
-            into[i] = static_cast<uint8_t>(it->second[i]);
-        }
-    };
-    takeFlags("alive", ps.alive);
-    Simulation::ErosionAccount erosion;
-    if (fe::FeSolid* fe = sim.finiteElements()) {
-        auto& nd = fe->nodes();
-        auto& el = fe->elements();
-        if (s.extra.value("node_count", std::size_t{0}) != nd.size() ||
-            s.extra.value("element_count", std::size_t{0}) != el.size()) {
-            throw InputError("<checkpoint>", "/node_count",
-                             "the checkpoint's FE mesh differs from the scene's",
-                             "a checkpoint of the same scene and resolution");
-        }
-        takeFields(s, "node_", nd, fe::kNodeStateFields);
-        takeFlags("node_alive", nd.alive);
-        takeFields(s, "element_", el, fe::kElementStateFields);
-        takeArray(s, "element_volumetric_rate", fe->volumetricRate());
-        takeArray(s, "element_hourglass_rate", fe->hourglassRate());
-        takeFlags("element_alive", el.alive);
-        if (el.hasStrength()) {
-            takeFields(s, "element_", el, fe::kElementStrengthFields);
-        }
-        erosion.energy = s.extra.value("eroded_energy_J", 0.0);
-        erosion.count = s.extra.value("eroded_elements", std::size_t{0});
-    }
-    Ledger::Account account;
-    account.initialEnergy = s.extra.at("initial_energy_J");
-    account.deletedEnergy = s.extra.at("deleted_energy_J");
-    account.deletedMass = s.extra.at("deleted_mass_mg");
-    account.deletedMomentumZ = s.extra.at("deleted_momentum_z");
-    account.runaway = s.extra.at("runaway_deleted");
-    account.outOfDomain = s.extra.at("out_of_domain_deleted");
-    sim.restoreClock({s.timeUs, s.step, s.extra.at("dt_us")}, account, erosion);
-    auto& rt = sim.rates();
-    takeFields(s, "rate_", rt, sph::kRateFields);
-    if (ps.hasStrength()) {
-        takeFields(s, "rate_", rt, sph::kStrengthRateFields);
-    }
-    // +inf (nothing to limit) goes through JSON as null.
-    auto dtOf = [&](const char* key) {
-        const auto& v = s.extra.at(key);
-        return v.is_number() ? v.get<double>() : std::numeric_limits<double>::infinity();
-    };
-    std::vector<uint8_t> flags;
-    double feDt = 0.0, contactDt = 0.0;
-    int32_t feElement = -1;
-    if (sim.finiteElements()) {
-        const auto& stored = s.ints.at("contact_flags");
-        flags.assign(stored.begin(), stored.end());
-        feDt = dtOf("fe_dt_us");
-        feElement = s.extra.at("fe_dt_element").get<int32_t>();
-        contactDt = dtOf("contact_dt_us");
-        sim.contact()->restoreDissipatedEnergy(s.extra.at("contact_heat_J"));
-        sim.contact()->restoreFreeNodeHeat(s.extra.value("free_node_heat_J", 0.0));
-    }
-    sim.restoreVotes(dtOf("sph_dt_us"), s.extra.at("sph_dt_particle").get<int32_t>(), feDt,
-                     feElement, contactDt, std::move(flags));
 }
 
 namespace {
@@ -395,7 +230,7 @@ OutputSchedule resumeFrom(const std::filesystem::path& checkpointPath,
                          "--resume with the scene and --materials of the interrupted run, "
                          "or delete the checkpoint to start afresh");
     }
-    restoreCheckpoint(sim, state);
+    sim.restore(state);
     summary.maxEnergyError = state.extra.value("max_energy_error", 0.0);
     if (state.extra.contains("min_dt")) {
         summary.minDtUs = state.extra["min_dt"]["dt_us"].get<double>();

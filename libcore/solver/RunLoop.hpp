@@ -52,8 +52,8 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
                            const RunOptions& options,
                            const std::function<void(const std::string&)>& log);
 
-/// Copies every particle array and the clock into a checkpoint, and back.
+/// The simulation's checkpoint (Simulation::save) with the run's largest energy error so far;
+/// Simulation::restore reads it back.
 io::CheckpointState checkpointOf(const Simulation& sim, double maxEnergyError);
-void restoreCheckpoint(Simulation& sim, const io::CheckpointState& state);
 
 } // namespace hvi::solver

@@ -1,4 +1,5 @@
 #include "sph/NeighbourSearch.hpp"
+
 #include "core/Parallel.hpp"
 
 #include <algorithm>
@@ -76,8 +77,11 @@ bool stillValid(const ParticleSet& ps, const NeighbourSearchOptions& options,
     double dzMin = 0.0, dzMax = 0.0;
     bool wokeOutside = false;
     // min, max and "or" are exact and order-independent: any thread count gives the same.
-#pragma omp parallel for schedule(static) if (n > kParallelMinItems) \
-    reduction(min : dzMin) reduction(max : dzMax) reduction(|| : wokeOutside)
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems) reduction(min                 \
+                                                                               : dzMin)            \
+    reduction(max                                                                                  \
+              : dzMax) reduction(||                                                                \
+                                 : wokeOutside)
     for (std::size_t i = 0; i < n; ++i) {
         if (!ps.alive[i]) {
             continue;
@@ -112,8 +116,7 @@ bool stillValid(const ParticleSet& ps, const NeighbourSearchOptions& options,
                 continue;
             }
             const double dz = ps.z[i] - st.z[i] - c, dr = ps.r[i] - st.r[i];
-            double u = std::sqrt(dz * dz + dr * dr) +
-                       halfKappa * std::max(0.0, ps.h[i] - st.h[i]);
+            double u = std::sqrt(dz * dz + dr * dr) + halfKappa * std::max(0.0, ps.h[i] - st.h[i]);
             if (std::isnan(u)) {
                 u = std::numeric_limits<double>::infinity(); // a broken state: rebuild
             }
@@ -203,8 +206,42 @@ void buildNeighbourList(const ParticleSet& ps, const NeighbourSearchOptions& opt
 
 namespace {
 
-void build(const ParticleSet& ps, const NeighbourSearchOptions& options, NeighbourList& list,
-           const std::vector<uint8_t>& awake) {
+/// The alive particles' extent and their largest smoothing length.
+struct Extent {
+    double hMax = 0.0;
+    double zMin = 1e300, zMax = -1e300, rMax = -1e300;
+};
+
+Extent aliveExtent(const ParticleSet& ps) {
+    Extent e;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+        if (!ps.alive[i]) {
+            continue;
+        }
+        e.hMax = std::max(e.hMax, ps.h[i]);
+        e.zMin = std::min(e.zMin, ps.z[i]);
+        e.zMax = std::max(e.zMax, ps.z[i]);
+        e.rMax = std::max(e.rMax, ps.r[i]);
+    }
+    return e;
+}
+
+double medianAliveH(const ParticleSet& ps) {
+    std::vector<double> hAlive;
+    hAlive.reserve(ps.size());
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+        if (ps.alive[i]) {
+            hAlive.push_back(ps.h[i]);
+        }
+    }
+    std::nth_element(hAlive.begin(),
+                     hAlive.begin() + static_cast<std::ptrdiff_t>(hAlive.size() / 2), hAlive.end());
+    return hAlive[hAlive.size() / 2];
+}
+
+/// A build starts from the particles' current state and an empty list whose extended
+/// indices are the particles themselves.
+void startBuild(const ParticleSet& ps, const NeighbourSearchOptions& options, NeighbourList& list) {
     const std::size_t n = ps.size();
     list.listed.clear();
     list.neighbours.clear();
@@ -223,156 +260,189 @@ void build(const ParticleSet& ps, const NeighbourSearchOptions& options, Neighbo
     st.valid = true;
     ++st.builds;
     list.skin = 0.0;
-
-    // Bounding box and cell size from the alive particles.
-    double hMax = 0.0;
-    double zMin = 1e300, zMax = -1e300, rMax = -1e300;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!ps.alive[i]) {
-            continue;
-        }
-        hMax = std::max(hMax, ps.h[i]);
-        zMin = std::min(zMin, ps.z[i]);
-        zMax = std::max(zMax, ps.z[i]);
-        rMax = std::max(rMax, ps.r[i]);
-    }
     list.source.resize(n);
     list.sign.assign(n, 1.0);
     for (std::size_t i = 0; i < n; ++i) {
         list.source[i] = static_cast<int32_t>(i);
     }
     list.ghostCount = 0;
-    if (hMax <= 0.0) {
-        return;
-    }
-    const double support = options.kernelSupport * hMax;
+}
 
-    // Cell size from the median smoothing length, not the largest: where h varies (compressed
-    // material next to an expanding debris cloud) cells sized by the largest h would hold
-    // many times the particles a typical search needs. Particles reach further cells when
-    // their pair support asks for it, and cells are skipped by their own largest h (below).
-    std::vector<double> hAlive;
-    hAlive.reserve(n);
+/// Mirror ghosts of the particles that can come within one support of the axis before the
+/// next build (extended indices n...).
+void addMirrorGhosts(const ParticleSet& ps, double listedReach, NeighbourList& list) {
+    const std::size_t n = ps.size();
     for (std::size_t i = 0; i < n; ++i) {
-        if (ps.alive[i]) {
-            hAlive.push_back(ps.h[i]);
+        if (ps.alive[i] && ps.r[i] < listedReach) {
+            list.source.push_back(static_cast<int32_t>(i));
+            list.sign.push_back(-1.0);
+            list.build.mirrored[i] = 1;
         }
     }
-    std::nth_element(hAlive.begin(), hAlive.begin() + static_cast<std::ptrdiff_t>(hAlive.size() / 2),
-                     hAlive.end());
-    const double hMedian = hAlive[hAlive.size() / 2];
-    const double skin = std::max(0.0, options.skinFactor) * hMedian;
-    st.skin = skin;
-    list.skin = skin;
-    const double listedReach = support + skin; // the longest listed pair
+    list.ghostCount = list.source.size() - n;
+}
 
-    // Mirror ghosts of the particles that can come within one support of the axis before the
-    // next build.
-    if (options.axisymmetric) {
-        for (std::size_t i = 0; i < n; ++i) {
-            if (ps.alive[i] && ps.r[i] < listedReach) {
-                list.source.push_back(static_cast<int32_t>(i));
-                list.sign.push_back(-1.0);
-                st.mirrored[i] = 1;
-            }
-        }
-        list.ghostCount = list.source.size() - n;
-    }
-    const std::size_t nExt = list.source.size();
-    double rLow = -listedReach;
-    if (!options.axisymmetric) {
-        rLow = 1e300;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (ps.alive[i]) {
-                rLow = std::min(rLow, ps.r[i]);
-            }
-        }
-    }
+/// The cell grid of a build over the extended particles (ghosts at -r), CSR by cell, with
+/// each cell's largest h so a search can skip cells no pair support reaches.
+struct BuildGrid {
+    double zMin = 0.0, rLow = 0.0, cell = 0.0;
+    int64_t nz = 0, nr = 0;
+    std::vector<int64_t> cellOfExt; ///< per extended index (-1: not alive)
+    std::vector<int64_t> start;     ///< CSR offsets, nz * nr + 1
+    std::vector<int32_t> members;   ///< extended indices, ascending per cell
+    std::vector<double> hMax;       ///< per cell
 
-    // Cell grid; grow the cells if the box would need too many (a far-flung debris particle).
-    double cell = options.kernelSupport * hMedian + skin;
-    const double spanZ = zMax - zMin;
-    const double spanR = rMax - rLow;
-    constexpr double kMaxCells = 4.0e6;
-    while ((spanZ / cell + 1.0) * (spanR / cell + 1.0) > kMaxCells) {
-        cell *= 1.5;
-    }
-    list.cellSize = cell;
-    const auto nz = static_cast<int64_t>(spanZ / cell) + 1;
-    const auto nr = static_cast<int64_t>(spanR / cell) + 1;
-    const int64_t cellCount = nz * nr;
-    auto cellOf = [&](double zz, double rr) {
+    int64_t cellCount() const { return nz * nr; }
+    int64_t cellOf(double zz, double rr) const {
         auto iz = static_cast<int64_t>((zz - zMin) / cell);
         auto ir = static_cast<int64_t>((rr - rLow) / cell);
         iz = std::clamp<int64_t>(iz, 0, nz - 1);
         ir = std::clamp<int64_t>(ir, 0, nr - 1);
         return iz * nr + ir;
-    };
+    }
+};
 
-    // Counting sort of extended particles into cells (stable: ascending index per cell).
-    std::vector<int64_t> cellOfExt(nExt, -1);
-    std::vector<int64_t> cellStart(cellCount + 1, 0);
+/// Cells of kernelSupport h_median + skin over the extent, grown if the box would need too
+/// many (a far-flung debris particle); the extended particles sorted into them (counting
+/// sort, stable: ascending index per cell).
+BuildGrid makeGrid(const ParticleSet& ps, const NeighbourSearchOptions& options,
+                   const NeighbourList& list, const Extent& extent, double hMedian, double skin,
+                   double listedReach) {
+    BuildGrid g;
+    g.zMin = extent.zMin;
+    g.rLow = -listedReach;
+    if (!options.axisymmetric) {
+        g.rLow = 1e300;
+        for (std::size_t i = 0; i < ps.size(); ++i) {
+            if (ps.alive[i]) {
+                g.rLow = std::min(g.rLow, ps.r[i]);
+            }
+        }
+    }
+    double cell = options.kernelSupport * hMedian + skin;
+    const double spanZ = extent.zMax - extent.zMin;
+    const double spanR = extent.rMax - g.rLow;
+    constexpr double kMaxCells = 4.0e6;
+    while ((spanZ / cell + 1.0) * (spanR / cell + 1.0) > kMaxCells) {
+        cell *= 1.5;
+    }
+    g.cell = cell;
+    g.nz = static_cast<int64_t>(spanZ / cell) + 1;
+    g.nr = static_cast<int64_t>(spanR / cell) + 1;
+    const int64_t cellCount = g.cellCount();
+    const std::size_t nExt = list.source.size();
+    g.cellOfExt.assign(nExt, -1);
+    g.start.assign(static_cast<std::size_t>(cellCount + 1), 0);
     for (std::size_t j = 0; j < nExt; ++j) {
         const int32_t s = list.source[j];
         if (!ps.alive[s]) {
             continue;
         }
-        cellOfExt[j] = cellOf(ps.z[s], list.sign[j] * ps.r[s]);
-        ++cellStart[cellOfExt[j] + 1];
+        g.cellOfExt[j] = g.cellOf(ps.z[s], list.sign[j] * ps.r[s]);
+        ++g.start[g.cellOfExt[j] + 1];
     }
     for (int64_t c = 0; c < cellCount; ++c) {
-        cellStart[c + 1] += cellStart[c];
+        g.start[c + 1] += g.start[c];
     }
-    std::vector<int32_t> cellMembers(cellStart[cellCount]);
-    {
-        std::vector<int64_t> fill(cellStart.begin(), cellStart.end() - 1);
-        for (std::size_t j = 0; j < nExt; ++j) {
-            if (cellOfExt[j] >= 0) {
-                cellMembers[fill[cellOfExt[j]]++] = static_cast<int32_t>(j);
-            }
-        }
-    }
-    // Largest h per cell, so a search can skip cells no pair support reaches.
-    std::vector<double> cellHMax(cellCount, 0.0);
+    g.members.resize(static_cast<std::size_t>(g.start[cellCount]));
+    std::vector<int64_t> fill(g.start.begin(), g.start.end() - 1);
     for (std::size_t j = 0; j < nExt; ++j) {
-        if (cellOfExt[j] >= 0) {
-            const double hj = ps.h[list.source[j]];
-            cellHMax[cellOfExt[j]] = std::max(cellHMax[cellOfExt[j]], hj);
+        if (g.cellOfExt[j] >= 0) {
+            g.members[fill[g.cellOfExt[j]]++] = static_cast<int32_t>(j);
         }
     }
-    // Listed cells: the awake cells, dilated by the guard band (the disturbance may spread
-    // that far before the next build), then by the longest listed pair.
-    const auto reachCells = static_cast<int64_t>(std::ceil(listedReach / cell));
-    std::vector<uint8_t> awakeCell(cellCount, 0);
+    g.hMax.assign(static_cast<std::size_t>(cellCount), 0.0);
+    for (std::size_t j = 0; j < nExt; ++j) {
+        if (g.cellOfExt[j] >= 0) {
+            const double hj = ps.h[list.source[j]];
+            g.hMax[g.cellOfExt[j]] = std::max(g.hMax[g.cellOfExt[j]], hj);
+        }
+    }
+    return g;
+}
+
+/// The listed particles: those in the awake cells dilated by the guard band (the disturbance
+/// may spread that far before the next build), then by the longest listed pair; records
+/// each particle's cell and guard flag in the build state.
+void selectListed(const ParticleSet& ps, const NeighbourSearchOptions& options,
+                  const std::vector<uint8_t>& awake, const BuildGrid& g, double listedReach,
+                  NeighbourList& list) {
+    const std::size_t n = ps.size();
+    auto& st = list.build;
+    const auto reachCells = static_cast<int64_t>(std::ceil(listedReach / g.cell));
+    std::vector<uint8_t> awakeCell(static_cast<std::size_t>(g.cellCount()), 0);
     for (std::size_t i = 0; i < n; ++i) {
         if (awake[i]) {
-            awakeCell[cellOfExt[i]] = 1;
+            awakeCell[g.cellOfExt[i]] = 1;
         }
     }
     const std::vector<uint8_t> guardCell =
-        dilate(awakeCell, nz, nr, std::max(options.guardCells, 0));
-    const std::vector<uint8_t> listedCell = dilate(guardCell, nz, nr, reachCells);
-    st.nz = nz;
-    st.nr = nr;
+        dilate(awakeCell, g.nz, g.nr, std::max(options.guardCells, 0));
+    const std::vector<uint8_t> listedCell = dilate(guardCell, g.nz, g.nr, reachCells);
+    st.nz = g.nz;
+    st.nr = g.nr;
     st.reachCells = reachCells;
     for (std::size_t i = 0; i < n; ++i) {
         if (ps.alive[i]) {
-            st.cell[i] = cellOfExt[i];
-            st.guarded[i] = options.skipDormant ? guardCell[cellOfExt[i]] : 1;
-            if (listedCell[cellOfExt[i]]) {
+            st.cell[i] = g.cellOfExt[i];
+            st.guarded[i] = options.skipDormant ? guardCell[g.cellOfExt[i]] : 1;
+            if (listedCell[g.cellOfExt[i]]) {
                 list.listed.push_back(static_cast<int32_t>(i));
             }
         }
     }
+}
 
-    // Neighbour lists of the listed particles. Each thread takes a contiguous block of the
-    // listed particles (static schedule) and the blocks are joined in order; each particle's list
-    // is sorted, so it does not depend on the cells or the thread count.
+/// Appends to `out` the extended particles within kappa h_ij + skin of particle i, ascending.
+void findRow(const ParticleSet& ps, const NeighbourList& list, const BuildGrid& g, int32_t i,
+             double kappa, double hMax, double skin, std::vector<int32_t>& out) {
+    const double zi = ps.z[i], ri = ps.r[i], hi = ps.h[i];
+    const int64_t c = g.cellOfExt[i];
+    const int64_t iz = c / g.nr, ir = c % g.nr;
+    const std::size_t before = out.size();
+    const auto cellsOut =
+        static_cast<int64_t>(std::ceil((kappa * 0.5 * (hi + hMax) + skin) / g.cell));
+    for (int64_t jz = std::max<int64_t>(iz - cellsOut, 0); jz <= std::min(iz + cellsOut, g.nz - 1);
+         ++jz) {
+        const double zLoCell = g.zMin + static_cast<double>(jz) * g.cell;
+        const double gapZ = std::max({0.0, zLoCell - zi, zi - (zLoCell + g.cell)});
+        for (int64_t jr = std::max<int64_t>(ir - cellsOut, 0);
+             jr <= std::min(ir + cellsOut, g.nr - 1); ++jr) {
+            const int64_t cc = jz * g.nr + jr;
+            const double rLoCell = g.rLow + static_cast<double>(jr) * g.cell;
+            const double gapR = std::max({0.0, rLoCell - ri, ri - (rLoCell + g.cell)});
+            const double cellReach = kappa * 0.5 * (hi + g.hMax[cc]) + skin;
+            if (g.start[cc] == g.start[cc + 1] ||
+                gapZ * gapZ + gapR * gapR >= cellReach * cellReach) {
+                continue;
+            }
+            for (int64_t k = g.start[cc]; k < g.start[cc + 1]; ++k) {
+                const int32_t j = g.members[k];
+                if (j == i) {
+                    continue;
+                }
+                const int32_t s = list.source[j];
+                const double dz = zi - ps.z[s];
+                const double dr = ri - list.sign[j] * ps.r[s];
+                const double reach = kappa * 0.5 * (hi + ps.h[s]) + skin;
+                if (dz * dz + dr * dr < reach * reach) {
+                    out.push_back(j);
+                }
+            }
+        }
+    }
+    std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
+}
+
+/// Neighbour rows of the listed particles. Each thread takes a contiguous block of the listed
+/// particles (static schedule) and the blocks are joined in order; each row is sorted, so it
+/// depends neither on the cells nor on the thread count.
+void buildRows(const ParticleSet& ps, const BuildGrid& g, double kappa, double hMax, double skin,
+               NeighbourList& list) {
     const std::size_t listedCount = list.listed.size();
     const int threads = omp_get_max_threads();
     std::vector<std::vector<int32_t>> threadNeighbours(threads);
     std::vector<int64_t> counts(listedCount, 0);
-    const double kappa = options.kernelSupport;
 #pragma omp parallel if (listedCount > kParallelMinHeavyItems)
     {
         // Filled privately and handed over at the end: pushing into the shared vector of
@@ -380,42 +450,8 @@ void build(const ParticleSet& ps, const NeighbourSearchOptions& options, Neighbo
         std::vector<int32_t> local;
 #pragma omp for schedule(static)
         for (std::size_t a = 0; a < listedCount; ++a) {
-            const int32_t i = list.listed[a];
-            const double zi = ps.z[i], ri = ps.r[i], hi = ps.h[i];
-            const int64_t c = cellOfExt[i];
-            const int64_t iz = c / nr, ir = c % nr;
             const std::size_t before = local.size();
-            const auto cellsOut =
-                static_cast<int64_t>(std::ceil((kappa * 0.5 * (hi + hMax) + skin) / cell));
-            for (int64_t jz = std::max<int64_t>(iz - cellsOut, 0); jz <= std::min(iz + cellsOut, nz - 1); ++jz) {
-                const double zLoCell = zMin + static_cast<double>(jz) * cell;
-                const double gapZ = std::max({0.0, zLoCell - zi, zi - (zLoCell + cell)});
-                for (int64_t jr = std::max<int64_t>(ir - cellsOut, 0); jr <= std::min(ir + cellsOut, nr - 1);
-                     ++jr) {
-                    const int64_t cc = jz * nr + jr;
-                    const double rLoCell = rLow + static_cast<double>(jr) * cell;
-                    const double gapR = std::max({0.0, rLoCell - ri, ri - (rLoCell + cell)});
-                    const double cellReach = kappa * 0.5 * (hi + cellHMax[cc]) + skin;
-                    if (cellStart[cc] == cellStart[cc + 1] ||
-                        gapZ * gapZ + gapR * gapR >= cellReach * cellReach) {
-                        continue;
-                    }
-                    for (int64_t k = cellStart[cc]; k < cellStart[cc + 1]; ++k) {
-                        const int32_t j = cellMembers[k];
-                        if (j == i) {
-                            continue;
-                        }
-                        const int32_t s = list.source[j];
-                        const double dz = zi - ps.z[s];
-                        const double dr = ri - list.sign[j] * ps.r[s];
-                        const double reach = kappa * 0.5 * (hi + ps.h[s]) + skin;
-                        if (dz * dz + dr * dr < reach * reach) {
-                            local.push_back(j);
-                        }
-                    }
-                }
-            }
-            std::sort(local.begin() + static_cast<std::ptrdiff_t>(before), local.end());
+            findRow(ps, list, g, list.listed[a], kappa, hMax, skin, local);
             counts[a] = static_cast<int64_t>(local.size() - before);
         }
         threadNeighbours[omp_get_thread_num()] = std::move(local);
@@ -428,6 +464,31 @@ void build(const ParticleSet& ps, const NeighbourSearchOptions& options, Neighbo
     for (const auto& local : threadNeighbours) {
         list.neighbours.insert(list.neighbours.end(), local.begin(), local.end());
     }
+}
+
+void build(const ParticleSet& ps, const NeighbourSearchOptions& options, NeighbourList& list,
+           const std::vector<uint8_t>& awake) {
+    startBuild(ps, options, list);
+    const Extent extent = aliveExtent(ps);
+    if (extent.hMax <= 0.0) {
+        return;
+    }
+    const double support = options.kernelSupport * extent.hMax;
+    // Cell size from the median smoothing length, not the largest: where h varies (compressed
+    // material next to an expanding debris cloud) cells sized by the largest h would hold
+    // many times the particles a typical search needs. Particles reach further cells when
+    // their pair support asks for it, and cells are skipped by their own largest h.
+    const double hMedian = medianAliveH(ps);
+    const double skin = std::max(0.0, options.skinFactor) * hMedian;
+    list.build.skin = skin;
+    list.skin = skin;
+    const double listedReach = support + skin; // the longest listed pair
+    if (options.axisymmetric) {
+        addMirrorGhosts(ps, listedReach, list);
+    }
+    const BuildGrid grid = makeGrid(ps, options, list, extent, hMedian, skin, listedReach);
+    selectListed(ps, options, awake, grid, listedReach, list);
+    buildRows(ps, grid, options.kernelSupport, extent.hMax, skin, list);
 }
 
 } // namespace

@@ -336,7 +336,7 @@ TEST(HviRunCli, ResolutionFlagSetsParticleSpacingAndElementSize) {
     EXPECT_EQ(reader.snapshots().front().elementCount, 600u);
 }
 
-// The scenes the workflows ship (docs/fe-erosion.md's tables come from them) load and run:
+// The scenes the workflows ship (docs/notebook/fe-erosion.md's tables come from them) load and run:
 // each at a coarse 0.2 mm for 0.02 us, a smoke test of the files, not of their physics.
 TEST(HviRunCli, ShippedCalibrationScenesRun) {
     const auto folder = sourcePath("workflows/erosion-calibration");

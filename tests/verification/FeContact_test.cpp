@@ -306,7 +306,7 @@ TEST(FeContact, UniformFeBlowHeatsTheFrontRowsAlike) {
 // particle centred on a segment equally too); the radius-weighted hat integrals (mortar in
 // RZ) left the axis node at 0.69 of its neighbours' speed (31 %). The bar is 5 %. (Later the
 // SPH first column's own axial excess drives the axis node ahead: at 0.25 us the axis
-// element has +388 % of its row's plastic strain, docs/fe-erosion.md.)
+// element has +388 % of its row's plastic strain, docs/notebook/fe-erosion.md.)
 TEST(FeContact, UniformSphBlowMovesTheStruckSurfaceUniformly) {
     solver::Simulation sim(uniformImpactScene(true), scene::sceneLibrary(json::object(), "<test>"));
     const std::vector<double> z0 = sim.finiteElements()->nodes().z;

@@ -1,7 +1,7 @@
 // Erosion (issue #5, item 3): an SPH Al sphere (1 mm diameter) striking an FE Al 6061-T6 plate
 // (1 mm thick, erosion factor 1.5) perforates it above a speed and not below it. The
-// threshold was bracketed once with this test's own scene (docs/fe-erosion.md gives the
-// sweep: between 1.5 and 1.6 km/s); the test checks 1.0 km/s (not perforated, well below)
+// threshold was bracketed once with this test's own scene (docs/notebook/fe-erosion.md gives
+// the sweep: between 1.5 and 1.6 km/s); the test checks 1.0 km/s (not perforated, well below)
 // and 2.2 km/s (perforated, well above), that eroded mass is reported, and that the energy
 // error stays below 5 %.
 #include "SceneRun.hpp"
@@ -117,7 +117,7 @@ TEST(FeErosion, Sweep) {
     }
 }
 
-// The sweep at 0.04 mm (docs/fe-erosion.md) put the threshold between 1.5 km/s (not
+// The sweep at 0.04 mm (docs/notebook/fe-erosion.md) put the threshold between 1.5 km/s (not
 // perforated at 6 us) and 1.6 km/s (perforated); the test checks 1.0 and 2.2 km/s, about a
 // third either side.
 TEST(FeErosion, NotPerforatedWellBelowThreshold) {

@@ -73,7 +73,7 @@ TEST(FeResume, CheckpointedRunEndsBitForBit) {
     const auto path = test::tempPath("fe_resume.ckpt.h5");
     io::writeCheckpoint(path, solver::checkpointOf(straight, 0.0));
     solver::Simulation resumed(sc, library);
-    solver::restoreCheckpoint(resumed, io::readCheckpoint(path));
+    resumed.restore(io::readCheckpoint(path));
     for (int k = 0; k < 150; ++k) {
         straight.advance();
         resumed.advance();

@@ -5,7 +5,8 @@
 # same item (1.7 mm FE rear wall at 100, 150 and 200 mm, where the NASA JSC equation predicts
 # no perforation with margins of 18, 35 and 48 %) at erosion 1.5 and its own 0.05 mm spacing
 # (about 7, 10 and 12 min on 2 cores). Prints one line per run and leaves the run files,
-# verdicts and pictures in OUTDIR. docs/fe-erosion.md has the measured tables.
+# verdicts and pictures in OUTDIR. docs/notebook/fe-erosion.md has the measured tables;
+# docs/fe-erosion.md the erosion rule.
 # Usage: [WHIPPLE=1] workflows/erosion-calibration/run.sh [OUTDIR] [SPACING_MM] [THREADS]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"

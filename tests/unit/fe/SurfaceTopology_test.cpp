@@ -56,8 +56,16 @@ void expectConsistent(const fe::SurfaceTopology& s, const fe::ElementSet& el,
             ++count[static_cast<std::size_t>(el.node(i, a))];
         }
     }
+    const auto& nc = s.nodeCorners;
     for (std::size_t n = 0; n < nd.size(); ++n) {
-        ASSERT_EQ(s.nodeElementOffset[n + 1] - s.nodeElementOffset[n], count[n]) << "node " << n;
+        ASSERT_EQ(nc.offset[n + 1] - nc.offset[n], count[n]) << "node " << n;
+        for (int64_t k = nc.offset[n]; k < nc.offset[n + 1]; ++k) {
+            // Each listed corner is an alive element's corner at this node.
+            const int32_t corner = nc.corners[static_cast<std::size_t>(k)];
+            const std::size_t e = fe::NodeCorners::elementOf(corner);
+            EXPECT_TRUE(el.alive[e]) << "node " << n;
+            EXPECT_EQ(static_cast<std::size_t>(el.node(e, corner % 4)), n) << "node " << n;
+        }
     }
 }
 

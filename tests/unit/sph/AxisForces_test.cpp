@@ -167,7 +167,8 @@ TEST(AxisForces, PressedFacePushesTheFirstColumnLikeTheRest) {
     // force weighs a neighbour m_j / (2 pi r_i); its z-face sum exceeds the area-weighted one
     // where mirror images sit among the neighbours (their mass grows with |r|, not with the
     // signed r), so the first column was pushed 1.26 times harder than its row (measured); at an
-    // SPH-FE contact face that column ran ahead into the FE axis node (docs/fe-erosion.md).
+    // SPH-FE contact face that column ran ahead into the FE axis node
+    // (docs/notebook/fe-erosion.md).
     // The axial sums next to the axis are now the area-weighted ones, which a lattice mirrored
     // at the axis makes the same in every column: equal to round-off (1.0055 when the excess
     // was handed on to the neighbours). The net force is zero by the block's z-symmetry.

@@ -1,0 +1,67 @@
+// The SPH package of the time loop (solver/Package.hpp): the hydrodynamic rates
+// (sph/SphHydro.hpp) and the particle material pipeline (material/MaterialPackage.hpp) over
+// the evolving particles, their leapfrog over the integrated field list
+// (solver/HalfStep.hpp), and the particle-only rules of the step: reflection at the axis,
+// the density and smoothing-length clamps.
+//
+// Units: mm, us, mg (km/s, GPa, g/cm^3, MJ/kg).
+#pragma once
+
+#include "material/MaterialPackage.hpp"
+#include "scene/Scene.hpp"
+#include "solver/Package.hpp"
+#include "solver/ParticleState.hpp"
+#include "sph/NeighbourSearch.hpp"
+#include "sph/ParticleGenerator.hpp"
+#include "sph/SphHydro.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace hvi::solver {
+
+class SphPackage final : public Package {
+public:
+    /// `fills` and `specs`: one per body of the scene, kept by the caller for the package's
+    /// lifetime; `bodies`: each body's particles and material.
+    SphPackage(const scene::Scene& scene, ParticleState& points,
+               const std::vector<sph::BodyFill>& fills,
+               const std::vector<material::MaterialSpec>& specs,
+               std::vector<material::BodyMaterial> bodies, bool skipDormant);
+
+    const char* name() const override { return "sph"; }
+    double stableTimeStep() const override { return m_hydro.stableTimeStep(); }
+    void kick(double dt) override;
+    void drift(double dt) override;
+    void evaluate(double dt) override;
+    void kickAgain(double dt) override;
+    void finish(double dt) override;
+    void prepare(double dtGuess) override;
+    void save(io::CheckpointState& state) const override;
+    void restore(const io::CheckpointState& state) override;
+
+    /// The particle whose stability limit set the last vote (-1 if none).
+    int32_t limitingParticle() const { return m_hydro.limitingParticle(); }
+    const sph::NeighbourList& neighbours() const { return m_neighbours; }
+    const material::MaterialPackage& materials() const { return m_materials; }
+
+private:
+    /// Neighbour list, hydro rates and stress rates at the current state; the particles the
+    /// evaluation activates join the evolving set.
+    void computeRates();
+    /// Half-step arrays := state, no particle evolving, the next evaluation repacks all.
+    void resetHalfStep();
+    void clampSmoothingLengths();
+
+    const scene::Scene& m_scene;
+    ParticleState& m_points;
+    const std::vector<sph::BodyFill>& m_fills;
+    const std::vector<material::MaterialSpec>& m_specs;
+    material::MaterialPackage m_materials;
+    sph::SphHydro m_hydro;
+    sph::NeighbourList m_neighbours;
+    sph::NeighbourSearchOptions m_searchOptions;
+    bool m_packAll = true; ///< the next evaluation repacks every particle
+};
+
+} // namespace hvi::solver
