@@ -6,6 +6,8 @@
 // Units: mm.
 #pragma once
 
+#include "core/CellBins.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -43,19 +45,9 @@ struct PointGrid {
         r0 = rLo - cell;
         nz = cellZ(zHi) + 2;
         nr = cellR(rHi) + 2;
-        start.assign(static_cast<std::size_t>(nz * nr) + 1, 0);
-        for (std::size_t i = 0; i < n; ++i) {
-            ++start[static_cast<std::size_t>(cellZ(getZ(i)) * nr + cellR(getR(i))) + 1];
-        }
-        for (std::size_t c = 1; c < start.size(); ++c) {
-            start[c] += start[c - 1];
-        }
-        items.assign(n, 0);
-        std::vector<int32_t> fill(start.begin(), start.end() - 1);
-        for (std::size_t i = 0; i < n; ++i) {
-            const auto c = static_cast<std::size_t>(cellZ(getZ(i)) * nr + cellR(getR(i)));
-            items[static_cast<std::size_t>(fill[c]++)] = static_cast<int32_t>(i);
-        }
+        binByCell(
+            n, static_cast<std::size_t>(nz * nr),
+            [&](std::size_t i) { return cellZ(getZ(i)) * nr + cellR(getR(i)); }, start, items);
     }
 
     /// Calls f(item) for the items in the 3 x 3 cells around (z, r), in cell order.

@@ -1,5 +1,6 @@
 #include "sph/NeighbourSearch.hpp"
 
+#include "core/CellBins.hpp"
 #include "core/Parallel.hpp"
 
 #include <algorithm>
@@ -332,25 +333,15 @@ BuildGrid makeGrid(const ParticleSet& ps, const NeighbourSearchOptions& options,
     const int64_t cellCount = g.cellCount();
     const std::size_t nExt = list.source.size();
     g.cellOfExt.assign(nExt, -1);
-    g.start.assign(static_cast<std::size_t>(cellCount + 1), 0);
     for (std::size_t j = 0; j < nExt; ++j) {
         const int32_t s = list.source[j];
-        if (!ps.alive[s]) {
-            continue;
-        }
-        g.cellOfExt[j] = g.cellOf(ps.z[s], list.sign[j] * ps.r[s]);
-        ++g.start[g.cellOfExt[j] + 1];
-    }
-    for (int64_t c = 0; c < cellCount; ++c) {
-        g.start[c + 1] += g.start[c];
-    }
-    g.members.resize(static_cast<std::size_t>(g.start[cellCount]));
-    std::vector<int64_t> fill(g.start.begin(), g.start.end() - 1);
-    for (std::size_t j = 0; j < nExt; ++j) {
-        if (g.cellOfExt[j] >= 0) {
-            g.members[fill[g.cellOfExt[j]]++] = static_cast<int32_t>(j);
+        if (ps.alive[s]) {
+            g.cellOfExt[j] = g.cellOf(ps.z[s], list.sign[j] * ps.r[s]);
         }
     }
+    binByCell(
+        nExt, static_cast<std::size_t>(cellCount), [&](std::size_t j) { return g.cellOfExt[j]; },
+        g.start, g.members);
     g.hMax.assign(static_cast<std::size_t>(cellCount), 0.0);
     for (std::size_t j = 0; j < nExt; ++j) {
         if (g.cellOfExt[j] >= 0) {
