@@ -47,7 +47,7 @@ struct ElementSet {
     std::vector<double> plasticStrain;   ///< [-] (empty without strength)
     std::vector<double> damage;          ///< [-] (empty without strength)
     std::vector<double> tensionOnset;    ///< damage state (JohnsonCookDamage::damageAfter) [-]
-    std::vector<double> geometricStrain; ///< accumulated effective total strain [-]
+    std::vector<double> geometricStrain; ///< the strain erosion tests (fe/ErosionStrain.hpp) [-]
 
     std::size_t size() const { return body.size(); }
     bool hasStrength() const { return m_withStrength; }

@@ -296,8 +296,9 @@ struct FieldTable<FeNodeFieldsOf<S>> {
         bindField(&F::vz, "Vz", 1, "km/s", kVelocity, req, "Axial velocity of the node"),
         bindField(&F::vr, "Vr", 1, "km/s", kVelocity, req, "Radial velocity of the node"),
         bindField(&F::mass, "Mass", 1, "mg", kMass, req,
-                  "Lumped nodal mass (whole ring in axisymmetric runs); nodes of eroded "
-                  "elements keep their mass and momentum"),
+                  "Lumped nodal mass (whole ring in axisymmetric runs); an eroded element's "
+                  "share leaves with the particle it becomes (fe.eroded_material particles), "
+                  "or stays on its nodes (free_nodes)"),
     };
 };
 
@@ -311,8 +312,9 @@ struct FieldTable<FeElementFieldsOf<S>> {
                   "The 4 nodes of the quadrilateral element as 0-based indices into this "
                   "snapshot's Nodes datasets, counter-clockwise in the (z, r) plane"),
         bindField(&F::alive, "Alive", 1, "-", kDimensionless, req,
-                  "1 for an intact element, 0 once eroded (geometric strain above the "
-                  "erosion factor)"),
+                  "1 for an intact element, 0 once eroded: inverted or folded, geometric "
+                  "strain above the erosion factor, crushed past the density ceiling, or "
+                  "failed completely (docs/fe-erosion.md)"),
         bindField(&F::damage, "Damage", 1, "-", kDimensionless, opt,
                   "Scalar damage D in [0, 1] of the failure model (1 = fully failed)"),
         bindField(&F::plasticStrain, "PlasticStrain", 1, "-", kDimensionless, opt,
@@ -352,8 +354,9 @@ struct FieldTable<HistoryOf<S>> {
                   "|TotalEnergy[0]|: energy carried away by deleted particles and eroded "
                   "elements counts as accounted for; > 0 means energy was created"),
         bindField(&F::deletedEnergy, "DeletedEnergy", 1, "J", kEnergy, req,
-                  "Cumulative kinetic and internal energy removed with deleted particles and "
-                  "the internal energy of eroded elements (their nodes stay)"),
+                  "Cumulative energy that left the calculation: deleted particles and free "
+                  "nodes (kinetic and internal), eroded elements whose mass stays on their "
+                  "nodes (internal; fe.eroded_material free_nodes), free nodes' contact heat"),
         bindField(&F::mass, "Mass", 1, "mg", kMass, req,
                   "Mass of the material in the calculation (alive particles, FE nodes); the "
                   "deleted mass is Mass[0] - Mass"),
