@@ -16,24 +16,99 @@ using nlohmann::json;
 
 namespace {
 
-/// Where foam_panel.json holds each key of geometry::FoamCoreSpec.
-const std::vector<KeyLocation>& foamKeys() {
-    static const std::vector<KeyLocation> keys = {
-        {"standoff_mm", "/panel/core_thickness_mm"},
-        {"relative_density_percent", "/panel/relative_density_percent"},
-        {"ppi", "/panel/ppi"},
-        {"material_density_g_cm3", "/panel/material"},
-        {"domain_radius_mm", "/numerics/domain_radius_mm"},
-        {"particle_spacing_mm", "/numerics/particle_spacing_mm"},
-        {"ppi_factor", "/reduction/ppi_factor"},
-        {"thickness_rule", "/reduction/layer_rule"},
-        {"ligament_thickness_mm", "/reduction/ligament_thickness_mm"},
-        {"layer_model", "/reduction/model"},
-        {"segment_length_mm", "/reduction/segment_length_mm"},
-        {"segment_gap_fraction", "/reduction/segment_gap_fraction"},
-        {"segment_stagger_fraction", "/reduction/segment_stagger_fraction"},
+/// Each key of geometry::FoamCoreSpec, written once: where foam_panel.json holds it, the
+/// flag that sets it (none for the keys the panel frame and the numerics give), and how it
+/// reaches the spec. The order is the flags' order in --help.
+struct FoamKey {
+    const char* libraryKey; ///< its name in geometry::FoamCoreSpec's error messages
+    const char* pointer;    ///< where foam_panel.json holds it
+    const char* flags;      ///< foam2layers' flag(s), or nullptr
+    const char* help;
+    std::vector<std::string> choices;       ///< a text key's values, the default first
+    double geometry::FoamCoreSpec::*number; ///< the member a number fills, or nullptr
+};
+
+const std::vector<FoamKey>& foamKeyTable() {
+    using Spec = geometry::FoamCoreSpec;
+    static const std::vector<FoamKey> keys = {
+        {"standoff_mm", "/panel/core_thickness_mm", nullptr, "", {}, nullptr},
+        {"relative_density_percent",
+         "/panel/relative_density_percent",
+         "--relative-density-percent",
+         "Foam relative density [%], 0 < value < 100",
+         {},
+         &Spec::relativeDensityPercent},
+        {"ppi", "/panel/ppi", "--ppi", "Foam pores per inch [1/in], > 0", {}, &Spec::ppi},
+        {"material_density_g_cm3", "/panel/material", nullptr, "", {}, nullptr},
+        {"domain_radius_mm", "/numerics/domain_radius_mm", nullptr, "", {}, nullptr},
+        {"particle_spacing_mm", "/numerics/particle_spacing_mm", nullptr, "", {}, nullptr},
+        {"ppi_factor",
+         "/reduction/ppi_factor",
+         "--effective-ppi-factor,--ppi-factor",
+         "Effective PPI / real PPI [-], 0 < value <= 1 (default 0.5)",
+         {},
+         &Spec::ppiFactor},
+        {"thickness_rule",
+         "/reduction/layer_rule",
+         "--layer-rule",
+         "Layer thickness: mass (default, conserves the foam's areal mass), eq31 "
+         "(source study's eq 31), ligament (--ligament-thickness-mm)",
+         {"mass", "eq31", "ligament"},
+         nullptr},
+        {"ligament_thickness_mm",
+         "/reduction/ligament_thickness_mm",
+         "--ligament-thickness-mm",
+         "Measured ligament thickness [mm], > 0 (with --layer-rule ligament)",
+         {},
+         &Spec::ligamentThicknessMm},
+        {"layer_model",
+         "/reduction/model",
+         "--model",
+         "Layers as full disks (default) or staggered flat segments",
+         {"disks", "segments"},
+         nullptr},
+        {"segment_length_mm",
+         "/reduction/segment_length_mm",
+         "--segment-length-mm",
+         "Radial length of one flat segment [mm], > 0 (with --model segments)",
+         {},
+         &Spec::segmentLengthMm},
+        {"segment_gap_fraction",
+         "/reduction/segment_gap_fraction",
+         "--segment-gap-fraction",
+         "Gap / (segment + gap) [-], 0 <= value < 1 (default 0.5)",
+         {},
+         &Spec::segmentGapFraction},
+        {"segment_stagger_fraction",
+         "/reduction/segment_stagger_fraction",
+         "--segment-stagger-fraction",
+         "Radial shift of even layers / segment period [-], 0 <= value < 1 (default 0.5)",
+         {},
+         &Spec::segmentStaggerFraction},
     };
     return keys;
+}
+
+/// Where foam_panel.json holds each key of geometry::FoamCoreSpec (to name it in errors).
+const std::vector<KeyLocation>& foamKeys() {
+    static const std::vector<KeyLocation> keys = [] {
+        std::vector<KeyLocation> out;
+        for (const auto& key : foamKeyTable()) {
+            out.push_back({key.libraryKey, key.pointer});
+        }
+        return out;
+    }();
+    return keys;
+}
+
+/// A text key's value, or its default (its first choice).
+std::string foamText(const PanelInput& input, const std::string& libraryKey) {
+    for (const auto& key : foamKeyTable()) {
+        if (libraryKey == key.libraryKey) {
+            return input.text(key.pointer, key.choices.front());
+        }
+    }
+    throw std::logic_error("no foam key " + libraryKey);
 }
 
 } // namespace
@@ -43,7 +118,7 @@ PanelInputKind foamPanelInputKind() {
     kind.schemaName = "foam_panel";
     kind.sizingPanelTypes = {"foam_sandwich", "whipple", "single_wall"};
     kind.otherTypesHint = "foam2layers reads foam panels, Whipple shields and single walls; "
-                           "hcomb2rings reads honeycomb_sandwich";
+                          "hcomb2rings reads honeycomb_sandwich";
     kind.defaultId = "foam_panel";
     kind.sizingPanelDrops = {"core_thickness_source", "rear_wall_yield_ksi", "rear_wall_yield_MPa"};
     kind.materialPointers = {"/threat/material", "/panel/material",
@@ -117,9 +192,9 @@ SceneResult buildCorelessScene(const PanelInput& input, const json& provenance) 
                       frame.frontFacesheetMaterial + " bumper, " +
                       formatNumber(frame.coreThicknessMm) + " mm gap, " + wall + " rear wall; " +
                       projectile;
-        result.report = {input.id() + ": Whipple shield, no core: " +
-                         formatNumber(frame.frontFacesheetMm) + " mm bumper, " +
-                         formatNumber(frame.coreThicknessMm) + " mm gap, " +
+        result.report = {input.id() +
+                         ": Whipple shield, no core: " + formatNumber(frame.frontFacesheetMm) +
+                         " mm bumper, " + formatNumber(frame.coreThicknessMm) + " mm gap, " +
                          formatNumber(frame.rearFacesheetMm) + " mm rear wall"};
     } else {
         description = "Single wall: " + wall + " plate; " + projectile;
@@ -151,19 +226,17 @@ SceneResult buildFoamScene(const PanelInput& input, const json& provenance) {
 
     geometry::FoamCoreSpec spec;
     spec.standoffMm = frame.coreThicknessMm;
-    spec.relativeDensityPercent = input.number("/panel/relative_density_percent");
-    spec.ppi = input.number("/panel/ppi");
+    for (const auto& key : foamKeyTable()) {
+        if (key.number) {
+            spec.*key.number = input.number(key.pointer);
+        }
+    }
     spec.materialDensityGCm3 = density;
     spec.domainRadiusMm = builder.domainRadiusMm();
-    spec.ppiFactor = input.number("/reduction/ppi_factor");
-    spec.rule = geometry::parseFoamThicknessRule(input.text("/reduction/layer_rule", "mass"))
+    spec.rule = geometry::parseFoamThicknessRule(foamText(input, "thickness_rule"))
                     .value_or(geometry::FoamThicknessRule::Mass);
-    spec.ligamentThicknessMm = input.number("/reduction/ligament_thickness_mm");
-    spec.model = geometry::parseFoamLayerModel(input.text("/reduction/model", "disks"))
+    spec.model = geometry::parseFoamLayerModel(foamText(input, "layer_model"))
                      .value_or(geometry::FoamLayerModel::Disks);
-    spec.segmentLengthMm = input.number("/reduction/segment_length_mm");
-    spec.segmentGapFraction = input.number("/reduction/segment_gap_fraction");
-    spec.segmentStaggerFraction = input.number("/reduction/segment_stagger_fraction");
     spec.particleSpacingMm = builder.numerics().particleSpacingMm;
 
     geometry::FoamLayerStack stack;
@@ -286,27 +359,16 @@ void Foam2LayersTool::addCoreOptions(CLI::App& app, FlagOverlay& flags) {
                     {"foam_sandwich", "whipple", "single_wall"});
     flags.addString(app, "--core-material", "/panel/core_material",
                     "Foam ligament material (default: --material)");
-    flags.addNumber(app, "--relative-density-percent", "/panel/relative_density_percent",
-                    "Foam relative density [%], 0 < value < 100");
-    flags.addNumber(app, "--ppi", "/panel/ppi", "Foam pores per inch [1/in], > 0");
-    flags.addNumber(app, "--effective-ppi-factor,--ppi-factor", "/reduction/ppi_factor",
-                    "Effective PPI / real PPI [-], 0 < value <= 1 (default 0.5)");
-    flags.addString(app, "--layer-rule", "/reduction/layer_rule",
-                    "Layer thickness: mass (default, conserves the foam's areal mass), eq31 "
-                    "(source study's eq 31), ligament (--ligament-thickness-mm)",
-                    {"mass", "eq31", "ligament"});
-    flags.addNumber(app, "--ligament-thickness-mm", "/reduction/ligament_thickness_mm",
-                    "Measured ligament thickness [mm], > 0 (with --layer-rule ligament)");
-    flags.addString(app, "--model", "/reduction/model",
-                    "Layers as full disks (default) or staggered flat segments",
-                    {"disks", "segments"});
-    flags.addNumber(app, "--segment-length-mm", "/reduction/segment_length_mm",
-                    "Radial length of one flat segment [mm], > 0 (with --model segments)");
-    flags.addNumber(app, "--segment-gap-fraction", "/reduction/segment_gap_fraction",
-                    "Gap / (segment + gap) [-], 0 <= value < 1 (default 0.5)");
-    flags.addNumber(app, "--segment-stagger-fraction", "/reduction/segment_stagger_fraction",
-                    "Radial shift of even layers / segment period [-], 0 <= value < 1 "
-                    "(default 0.5)");
+    for (const auto& key : foamKeyTable()) {
+        if (!key.flags) {
+            continue;
+        }
+        if (key.choices.empty()) {
+            flags.addNumber(app, key.flags, key.pointer, key.help);
+        } else {
+            flags.addString(app, key.flags, key.pointer, key.help, key.choices);
+        }
+    }
 }
 
 } // namespace hvi::app

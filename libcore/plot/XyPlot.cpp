@@ -95,9 +95,18 @@ XyPlot toAxisUnits(const XyPlot& plot) {
     return out;
 }
 
-void draw(cairo_t* cr, const XyPlot& original) {
-    const XyPlot plot = toAxisUnits(original);
-    // Data ranges.
+/// The axes' ranges in axis units and the frame on the page [pt]: given limits, or the
+/// data's (a linear y axis from 0, 5 % headroom; a logarithmic axis padded 5 %).
+struct Frame {
+    double x0 = 0.0, x1 = 1.0, y0 = 0.0, y1 = 1.0;
+    double left = 70, right = 20, top = 40, bottom = 55;
+    double pw = 0.0, ph = 0.0;
+    double X(double x) const { return left + (x - x0) / (x1 - x0) * pw; }
+    double Y(double y) const { return top + ph - (y - y0) / (y1 - y0) * ph; }
+};
+
+Frame frameOf(const XyPlot& plot, const XyPlot& original) {
+    Frame f;
     double x0 = plot.xMin, x1 = plot.xMax, y0 = plot.yMin, y1 = plot.yMax;
     double dx0 = 1e300, dx1 = -1e300, dy0 = 1e300, dy1 = -1e300;
     for (const auto& s : plot.series) {
@@ -129,83 +138,85 @@ void draw(cairo_t* cr, const XyPlot& original) {
         x1 = x0 + 1.0;
     if (y1 <= y0)
         y1 = y0 + 1.0;
+    f.x0 = x0, f.x1 = x1, f.y0 = y0, f.y1 = y1;
+    f.pw = plot.width - f.left - f.right;
+    f.ph = plot.height - f.top - f.bottom;
+    return f;
+}
 
-    const double left = 70, right = 20, top = 40, bottom = 55;
-    const double pw = plot.width - left - right, ph = plot.height - top - bottom;
-    auto X = [&](double x) { return left + (x - x0) / (x1 - x0) * pw; };
-    auto Y = [&](double y) { return top + ph - (y - y0) / (y1 - y0) * ph; };
-
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-
-    // Grid and ticks.
-    cairo_set_font_size(cr, 11);
-    // Tick positions in axis units, with their labels.
-    auto ticksOf = [](bool log, double lo, double hi) {
-        std::vector<std::pair<double, std::string>> out;
-        if (log) {
-            for (double t : logTicks(std::pow(10.0, lo), std::pow(10.0, hi))) {
-                out.emplace_back(std::log10(t), formatLogTick(t));
-            }
-            return out;
-        }
-        const auto t = niceTicks(lo, hi);
-        const double step = t.size() > 1 ? t[1] - t[0] : 1.0;
-        for (double v : t) {
-            out.emplace_back(v, formatTick(v, step));
+/// Tick positions in axis units, with their labels.
+std::vector<std::pair<double, std::string>> ticksOf(bool log, double lo, double hi) {
+    std::vector<std::pair<double, std::string>> out;
+    if (log) {
+        for (double t : logTicks(std::pow(10.0, lo), std::pow(10.0, hi))) {
+            out.emplace_back(std::log10(t), formatLogTick(t));
         }
         return out;
-    };
-    const auto xt = ticksOf(plot.xLog, x0, x1), yt = ticksOf(plot.yLog, y0, y1);
+    }
+    const auto t = niceTicks(lo, hi);
+    const double step = t.size() > 1 ? t[1] - t[0] : 1.0;
+    for (double v : t) {
+        out.emplace_back(v, formatTick(v, step));
+    }
+    return out;
+}
+
+/// Grid lines with their tick labels, and the frame.
+void drawGrid(cairo_t* cr, const XyPlot& plot, const Frame& f) {
+    cairo_set_font_size(cr, 11);
+    const auto xt = ticksOf(plot.xLog, f.x0, f.x1), yt = ticksOf(plot.yLog, f.y0, f.y1);
     cairo_set_line_width(cr, 0.5);
     for (const auto& [t, label] : xt) {
         cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-        cairo_move_to(cr, X(t), top);
-        cairo_line_to(cr, X(t), top + ph);
+        cairo_move_to(cr, f.X(t), f.top);
+        cairo_line_to(cr, f.X(t), f.top + f.ph);
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0, 0, 0);
         cairo_text_extents_t ext;
         cairo_text_extents(cr, label.c_str(), &ext);
-        cairo_move_to(cr, X(t) - ext.width / 2, top + ph + 16);
+        cairo_move_to(cr, f.X(t) - ext.width / 2, f.top + f.ph + 16);
         cairo_show_text(cr, label.c_str());
     }
     for (const auto& [t, label] : yt) {
         cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-        cairo_move_to(cr, left, Y(t));
-        cairo_line_to(cr, left + pw, Y(t));
+        cairo_move_to(cr, f.left, f.Y(t));
+        cairo_line_to(cr, f.left + f.pw, f.Y(t));
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0, 0, 0);
         cairo_text_extents_t ext;
         cairo_text_extents(cr, label.c_str(), &ext);
-        cairo_move_to(cr, left - ext.width - 6, Y(t) + ext.height / 2);
+        cairo_move_to(cr, f.left - ext.width - 6, f.Y(t) + ext.height / 2);
         cairo_show_text(cr, label.c_str());
     }
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, 1.0);
-    cairo_rectangle(cr, left, top, pw, ph);
+    cairo_rectangle(cr, f.left, f.top, f.pw, f.ph);
     cairo_stroke(cr);
+}
 
-    // Labels.
+/// The axis labels and the title.
+void drawLabels(cairo_t* cr, const XyPlot& plot, const Frame& f) {
     cairo_set_font_size(cr, 13);
     cairo_text_extents_t ext;
     cairo_text_extents(cr, plot.xLabel.c_str(), &ext);
-    cairo_move_to(cr, left + pw / 2 - ext.width / 2, plot.height - 14);
+    cairo_move_to(cr, f.left + f.pw / 2 - ext.width / 2, plot.height - 14);
     cairo_show_text(cr, plot.xLabel.c_str());
     cairo_save(cr);
     cairo_text_extents(cr, plot.yLabel.c_str(), &ext);
-    cairo_move_to(cr, 18, top + ph / 2 + ext.width / 2);
+    cairo_move_to(cr, 18, f.top + f.ph / 2 + ext.width / 2);
     cairo_rotate(cr, -M_PI / 2);
     cairo_show_text(cr, plot.yLabel.c_str());
     cairo_restore(cr);
     cairo_set_font_size(cr, 14);
     cairo_text_extents(cr, plot.title.c_str(), &ext);
-    cairo_move_to(cr, left + pw / 2 - ext.width / 2, 24);
+    cairo_move_to(cr, f.left + f.pw / 2 - ext.width / 2, 24);
     cairo_show_text(cr, plot.title.c_str());
+}
 
-    // Series, clipped to the frame.
+/// The series, clipped to the frame: lines broken at non-finite points, or markers.
+void drawSeries(cairo_t* cr, const XyPlot& plot, const Frame& f) {
     cairo_save(cr);
-    cairo_rectangle(cr, left, top, pw, ph);
+    cairo_rectangle(cr, f.left, f.top, f.pw, f.ph);
     cairo_clip(cr);
     for (const auto& s : plot.series) {
         cairo_set_source_rgb(cr, s.color.r, s.color.g, s.color.b);
@@ -218,8 +229,8 @@ void draw(cairo_t* cr, const XyPlot& original) {
                     pen = false;
                     continue;
                 }
-                pen ? cairo_line_to(cr, X(s.x[k]), Y(s.y[k]))
-                    : cairo_move_to(cr, X(s.x[k]), Y(s.y[k]));
+                pen ? cairo_line_to(cr, f.X(s.x[k]), f.Y(s.y[k]))
+                    : cairo_move_to(cr, f.X(s.x[k]), f.Y(s.y[k]));
                 pen = true;
             }
             cairo_stroke(cr);
@@ -230,22 +241,25 @@ void draw(cairo_t* cr, const XyPlot& original) {
                     continue;
                 }
                 cairo_new_sub_path(cr);
-                cairo_arc(cr, X(s.x[k]), Y(s.y[k]), std::max(s.width, 3.0), 0, 2 * M_PI);
+                cairo_arc(cr, f.X(s.x[k]), f.Y(s.y[k]), std::max(s.width, 3.0), 0, 2 * M_PI);
                 s.filledMarker ? cairo_fill(cr) : cairo_stroke(cr);
             }
         }
     }
     cairo_restore(cr);
+}
 
-    // Legend, top right inside the frame.
+/// The legend, top right inside the frame.
+void drawLegend(cairo_t* cr, const XyPlot& plot, const Frame& f) {
     cairo_set_font_size(cr, 11);
-    double ly = top + 16;
+    cairo_text_extents_t ext;
+    double ly = f.top + 16;
     for (const auto& s : plot.series) {
         if (s.label.empty()) {
             continue;
         }
         cairo_text_extents(cr, s.label.c_str(), &ext);
-        const double lx = left + pw - ext.width - 40;
+        const double lx = f.left + f.pw - ext.width - 40;
         cairo_set_source_rgb(cr, s.color.r, s.color.g, s.color.b);
         if (s.line) {
             cairo_set_line_width(cr, s.width);
@@ -262,6 +276,18 @@ void draw(cairo_t* cr, const XyPlot& original) {
         cairo_show_text(cr, s.label.c_str());
         ly += 16;
     }
+}
+
+void draw(cairo_t* cr, const XyPlot& original) {
+    const XyPlot plot = toAxisUnits(original);
+    const Frame frame = frameOf(plot, original);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    drawGrid(cr, plot, frame);
+    drawLabels(cr, plot, frame);
+    drawSeries(cr, plot, frame);
+    drawLegend(cr, plot, frame);
 }
 
 bool endsWith(const std::string& s, const std::string& suffix) {

@@ -129,19 +129,10 @@ Shape parseShape(const json& j) {
 
 } // namespace
 
-Scene parseScene(const json& document, const std::string& file,
-                 const std::vector<std::string>& knownMaterials) {
-    io::requireFiniteNumbers(document, file);
-    io::validateAgainstSchema(document, "scene", file);
-    const json doc = io::withSchemaDefaults(document, "scene");
+namespace {
 
-    Scene scene;
-    scene.resolved = doc;
-    scene.id = doc.at("id");
-    scene.description = doc.value("description", "");
-    scene.geometry = doc.at("geometry") == "planar" ? Geometry::Planar : Geometry::Axisymmetric;
-    scene.materials = doc.at("materials");
-
+/// The numerical blocks: sph, fe, run, output and domain.
+void parseControls(const json& doc, Scene& scene) {
     const json& sph = doc.at("sph");
     scene.sph.particleSpacing = sph.at("particle_spacing_mm");
     scene.sph.kernel = sph.at("kernel");
@@ -182,77 +173,71 @@ Scene parseScene(const json& document, const std::string& file,
     if (domain.contains("z_max_mm")) {
         scene.domain.zMax = domain.at("z_max_mm").get<double>();
     }
+}
 
-    std::set<std::string> materials(knownMaterials.begin(), knownMaterials.end());
-    for (const auto& [name, def] : scene.materials.items()) {
-        materials.insert(name);
+Body parseBody(const json& jb, const Scene& scene) {
+    Body b;
+    b.name = jb.at("name");
+    b.role = parseRole(jb.at("role"));
+    b.shape = parseShape(jb.at("shape"));
+    b.material = jb.at("material");
+    b.discretization = jb.at("discretization") == "fe" ? Discretization::Fe : Discretization::Sph;
+    b.velocityZ = jb.at("velocity").at("z_km_s");
+    b.velocityR = jb.at("velocity").at("r_km_s");
+    b.spacing =
+        jb.value("spacing_mm", b.discretization == Discretization::Fe ? scene.fe.elementSize
+                                                                      : scene.sph.particleSpacing);
+    b.erosionFactor = jb.value("erosion_factor", scene.fe.erosionFactor);
+    b.strength = jb.at("strength");
+    return b;
+}
+
+/// What is wrong with body b on its own (its shape, material, resolution and velocity).
+void checkBody(const Body& b, const Scene& scene, const std::set<std::string>& materials,
+               const std::string& file, const std::string& ptr, std::vector<InputIssue>& issues) {
+    if (!materials.count(b.material)) {
+        std::string known;
+        for (const auto& m : materials) {
+            known += (known.empty() ? "" : ", ") + m;
+        }
+        issues.push_back({file, ptr + "/material", "unknown material '" + b.material + "'",
+                          "one of: " + known + "; or define it under /materials"});
     }
-    std::vector<InputIssue> issues;
-    std::set<std::string> names;
-    const json& bodies = doc.at("bodies");
-    for (std::size_t k = 0; k < bodies.size(); ++k) {
-        const json& jb = bodies[k];
-        const std::string ptr = "/bodies/" + std::to_string(k);
-        Body b;
-        b.name = jb.at("name");
-        b.role = parseRole(jb.at("role"));
-        b.shape = parseShape(jb.at("shape"));
-        b.material = jb.at("material");
-        b.discretization =
-            jb.at("discretization") == "fe" ? Discretization::Fe : Discretization::Sph;
-        b.velocityZ = jb.at("velocity").at("z_km_s");
-        b.velocityR = jb.at("velocity").at("r_km_s");
-        b.spacing = jb.value("spacing_mm", b.discretization == Discretization::Fe
-                                               ? scene.fe.elementSize
-                                               : scene.sph.particleSpacing);
-        b.erosionFactor = jb.value("erosion_factor", scene.fe.erosionFactor);
-        b.strength = jb.at("strength");
-        if (!names.insert(b.name).second) {
-            issues.push_back({file, ptr + "/name", "duplicate body name '" + b.name + "'",
-                              "names unique within the scene"});
-        }
-        if (!materials.count(b.material)) {
-            std::string known;
-            for (const auto& m : materials) {
-                known += (known.empty() ? "" : ", ") + m;
-            }
-            issues.push_back({file, ptr + "/material", "unknown material '" + b.material + "'",
-                              "one of: " + known + "; or define it under /materials"});
-        }
-        if (b.shape.kind == ShapeKind::Plate && b.shape.outerRadius > 0.0 &&
-            b.shape.outerRadius <= b.shape.innerRadius) {
-            issues.push_back({file, ptr + "/shape/outer_radius_mm",
-                              "outer radius not larger than the inner radius",
-                              "outer_radius_mm > inner_radius_mm"});
-        }
-        if (b.shape.kind == ShapeKind::Rectangle &&
-            (b.shape.zMax <= b.shape.zMin || b.shape.rMax <= b.shape.rMin)) {
-            issues.push_back({file, ptr + "/shape", "empty rectangle",
-                              "z_max_mm > z_min_mm and r_max_mm > r_min_mm"});
-        }
-        // An SPH body needs two rows of points; an FE body is meshed with at least one element
-        // through any thickness (geometry::GmshMesher::divisions rounds up), so a foam layer
-        // thinner than the spacing is a thin mesh, not an unresolved body.
-        if (b.discretization == Discretization::Sph && b.shape.kind != ShapeKind::Sphere &&
-            b.spacing * 2.0 > b.shape.boundZMax() - b.shape.boundZMin()) {
-            issues.push_back({file, ptr + "/shape",
-                              "thinner than two particle spacings (" + std::to_string(b.spacing) +
-                                  " mm): it cannot be resolved",
-                              "a thicker body or a smaller spacing_mm"});
-        }
-        // In axisymmetry a part of a shield or its projectile that reaches the axis cannot
-        // move radially as a whole (issue #25, item 9). A body of role "other" may: a
-        // converging flow such as the cylindrical Noh problem starts that way.
-        if (scene.geometry == Geometry::Axisymmetric && b.role != BodyRole::Other &&
-            b.velocityR != 0.0 && b.shape.boundRMin() <= 0.0) {
-            issues.push_back({file, ptr + "/velocity/r_km_s",
-                              "a radial velocity on a body that reaches the axis",
-                              "0 in axisymmetric geometry (or a body off the axis)"});
-        }
-        scene.bodies.push_back(b);
+    if (b.shape.kind == ShapeKind::Plate && b.shape.outerRadius > 0.0 &&
+        b.shape.outerRadius <= b.shape.innerRadius) {
+        issues.push_back({file, ptr + "/shape/outer_radius_mm",
+                          "outer radius not larger than the inner radius",
+                          "outer_radius_mm > inner_radius_mm"});
     }
-    // The domain radius: given, or the widest body plus a margin of 10 % (plates with no
-    // outer radius need it).
+    if (b.shape.kind == ShapeKind::Rectangle &&
+        (b.shape.zMax <= b.shape.zMin || b.shape.rMax <= b.shape.rMin)) {
+        issues.push_back({file, ptr + "/shape", "empty rectangle",
+                          "z_max_mm > z_min_mm and r_max_mm > r_min_mm"});
+    }
+    // An SPH body needs two rows of points; an FE body is meshed with at least one element
+    // through any thickness (geometry::GmshMesher::divisions rounds up), so a foam layer
+    // thinner than the spacing is a thin mesh, not an unresolved body.
+    if (b.discretization == Discretization::Sph && b.shape.kind != ShapeKind::Sphere &&
+        b.spacing * 2.0 > b.shape.boundZMax() - b.shape.boundZMin()) {
+        issues.push_back({file, ptr + "/shape",
+                          "thinner than two particle spacings (" + std::to_string(b.spacing) +
+                              " mm): it cannot be resolved",
+                          "a thicker body or a smaller spacing_mm"});
+    }
+    // In axisymmetry a part of a shield or its projectile that reaches the axis cannot move
+    // radially as a whole (issue #25, item 9). A body of role "other" may: a converging flow
+    // such as the cylindrical Noh problem starts that way.
+    if (scene.geometry == Geometry::Axisymmetric && b.role != BodyRole::Other &&
+        b.velocityR != 0.0 && b.shape.boundRMin() <= 0.0) {
+        issues.push_back({file, ptr + "/velocity/r_km_s",
+                          "a radial velocity on a body that reaches the axis",
+                          "0 in axisymmetric geometry (or a body off the axis)"});
+    }
+}
+
+/// The domain radius: given, or the widest body plus a margin of 10 % (plates with no outer
+/// radius need it); plates with no outer radius then reach it.
+void settleDomainRadius(Scene& scene, const std::string& file, std::vector<InputIssue>& issues) {
     double widest = 0.0;
     for (const auto& b : scene.bodies) {
         widest = std::max(widest, b.shape.boundRMax());
@@ -271,6 +256,42 @@ Scene parseScene(const json& document, const std::string& file,
             b.shape.outerRadius = scene.domain.radius;
         }
     }
+}
+
+} // namespace
+
+Scene parseScene(const json& document, const std::string& file,
+                 const std::vector<std::string>& knownMaterials) {
+    io::requireFiniteNumbers(document, file);
+    io::validateAgainstSchema(document, "scene", file);
+    const json doc = io::withSchemaDefaults(document, "scene");
+
+    Scene scene;
+    scene.resolved = doc;
+    scene.id = doc.at("id");
+    scene.description = doc.value("description", "");
+    scene.geometry = doc.at("geometry") == "planar" ? Geometry::Planar : Geometry::Axisymmetric;
+    scene.materials = doc.at("materials");
+    parseControls(doc, scene);
+
+    std::set<std::string> materials(knownMaterials.begin(), knownMaterials.end());
+    for (const auto& [name, def] : scene.materials.items()) {
+        materials.insert(name);
+    }
+    std::vector<InputIssue> issues;
+    std::set<std::string> names;
+    const json& bodies = doc.at("bodies");
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+        const std::string ptr = "/bodies/" + std::to_string(k);
+        const Body b = parseBody(bodies[k], scene);
+        if (!names.insert(b.name).second) {
+            issues.push_back({file, ptr + "/name", "duplicate body name '" + b.name + "'",
+                              "names unique within the scene"});
+        }
+        checkBody(b, scene, materials, file, ptr, issues);
+        scene.bodies.push_back(b);
+    }
+    settleDomainRadius(scene, file, issues);
     if (issues.empty()) { // overlaps and the domain, once every shape is sound
         issues = bodyLayoutIssues(scene, file);
     }
