@@ -12,6 +12,9 @@ namespace hvi::solver {
 namespace {
 constexpr double kMaxDtGrowth = 1.25;
 constexpr int kProgressEvery = 10; ///< steps between penetration checks
+/// Simulated time between two confirmations of a rear-wall perforation [us]: the assessment
+/// costs a copy of the state and a pass over it, so it is asked at most this often.
+constexpr double kRearWallCheckEveryUs = 0.5;
 
 using WallClock = std::chrono::steady_clock;
 
@@ -59,6 +62,10 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         spacing.push_back(fill.spacing);
     }
     m_stop = std::make_unique<StopRules>(m_scene, std::move(spacing));
+    if (m_scene.run.stopOnRearWallPerforation) {
+        m_rearWall =
+            std::make_unique<RearWallConfirmation>(m_scene, m_points.set, finiteElements());
+    }
 
     m_points.countAlive();
     refreshRates();
@@ -127,6 +134,12 @@ double Simulation::energyError() const {
 
 void Simulation::updateProgress() {
     m_stop->update(m_time, m_points.set, m_fe ? &m_fe->solid().nodes() : nullptr);
+    if (m_rearWall && m_stop->awaitsRearWallConfirmation() && m_time >= m_nextRearWallCheck) {
+        m_nextRearWallCheck = m_time + kRearWallCheckEveryUs;
+        if (m_rearWall->perforated(m_time, m_step, m_points.set, finiteElements())) {
+            m_stop->confirmRearWallPerforation();
+        }
+    }
 }
 
 void Simulation::save(io::CheckpointState& s) const {
@@ -143,6 +156,8 @@ void Simulation::save(io::CheckpointState& s) const {
     s.extra["deleted_momentum_z"] = account.deletedMomentumZ;
     s.extra["runaway_deleted"] = account.runaway;
     s.extra["out_of_domain_deleted"] = account.outOfDomain;
+    s.extra["rear_wall_confirmed"] = m_stop->rearWallConfirmed();
+    s.extra["next_rear_wall_check_us"] = m_nextRearWallCheck;
 }
 
 void Simulation::restore(const io::CheckpointState& s) {
@@ -159,6 +174,10 @@ void Simulation::restore(const io::CheckpointState& s) {
     m_ledger.restore(account);
     m_loop.restore(s);
     m_points.countAlive();
+    m_nextRearWallCheck = s.extra.value("next_rear_wall_check_us", 0.0);
+    if (s.extra.value("rear_wall_confirmed", false)) {
+        m_stop->confirmRearWallPerforation();
+    }
     updateProgress();
 }
 

@@ -30,6 +30,7 @@
 #include "solver/Ledger.hpp"
 #include "solver/PackageLoop.hpp"
 #include "solver/ParticleState.hpp"
+#include "solver/RearWallConfirmation.hpp"
 #include "solver/SphPackage.hpp"
 #include "solver/StopRules.hpp"
 
@@ -138,6 +139,8 @@ private:
     Ledger m_ledger;
     DeletionRule m_deletion;
     std::unique_ptr<StopRules> m_stop;
+    std::unique_ptr<RearWallConfirmation> m_rearWall; ///< asked while the stop rule waits
+    double m_nextRearWallCheck = 0.0;                 ///< [us]
 };
 
 } // namespace hvi::solver

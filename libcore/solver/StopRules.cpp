@@ -183,6 +183,18 @@ bool StopRules::rearWallActive(double speed, const sph::ParticleSet& ps,
     return false;
 }
 
+bool StopRules::awaitsRearWallConfirmation() const {
+    if (!m_run.stopOnRearWallPerforation || m_rearWallConfirmed) {
+        return false;
+    }
+    for (std::size_t b = 0; b < m_bodies.size(); ++b) {
+        if (m_penetrated[b] && m_bodies[b].role == scene::BodyRole::RearWall) {
+            return true;
+        }
+    }
+    return false;
+}
+
 std::optional<std::string> StopRules::reason(double time, long step) const {
     if (time >= m_run.endTime * (1.0 - 1e-12)) {
         return "end_time";
@@ -193,7 +205,7 @@ std::optional<std::string> StopRules::reason(double time, long step) const {
     bool anyPenetrated = false;
     for (std::size_t b = 0; b < m_bodies.size(); ++b) {
         anyPenetrated = anyPenetrated || m_penetrated[b];
-        if (m_run.stopOnRearWallPerforation && m_penetrated[b] &&
+        if (m_run.stopOnRearWallPerforation && m_penetrated[b] && m_rearWallConfirmed &&
             m_bodies[b].role == scene::BodyRole::RearWall) {
             return "rear_wall_perforated";
         }

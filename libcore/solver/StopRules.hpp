@@ -1,5 +1,6 @@
 // The stop rules of a run (source study section 5.4, with the rear-wall wait of issue #26):
-// the end time and the step cap; the rear wall perforated (optional); the debris slower than
+// the end time and the step cap; the rear wall perforated (optional; as hvi-assess judges it,
+// solver/RearWallConfirmation.hpp, once the detector below flags it); the debris slower than
 // the stop speed; and no new body penetrated for a window while nothing advances, unless
 // material still moves toward or in the rear wall faster than the stop speed.
 //
@@ -34,6 +35,13 @@ public:
     std::optional<std::string> reason(double time, long step) const;
 
     const std::vector<uint8_t>& penetrated() const { return m_penetrated; }
+
+    /// The rule stops on perforation and the detector finds the rear wall penetrated, but
+    /// hvi-assess's rule has not confirmed it on the run's state yet
+    /// (solver/RearWallConfirmation.hpp): "rear_wall_perforated" waits for the confirmation.
+    bool awaitsRearWallConfirmation() const;
+    void confirmRearWallPerforation() { m_rearWallConfirmed = true; }
+    bool rearWallConfirmed() const { return m_rearWallConfirmed; }
     double lastProgressTime() const { return m_lastProgressTime; }
 
 private:
@@ -55,6 +63,7 @@ private:
     double m_debrisSpeed = 0.0;       ///< fastest forward speed of any alive point [km/s]
     /// The no-new-penetration rule waits while this holds (rearWallActive).
     bool m_rearWallActive = false;
+    bool m_rearWallConfirmed = false;
 };
 
 } // namespace hvi::solver
