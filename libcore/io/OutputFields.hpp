@@ -27,6 +27,7 @@
 // (column-major), so the solver can view such storage without copying.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -403,6 +404,30 @@ Fields<ConstSpanOf> viewOf(const Fields<VectorOf>& data) {
 
 inline FeFieldsView viewOf(const FeFields& data) {
     return FeFieldsView{viewOf(data.nodes), viewOf(data.elements)};
+}
+
+/// An owned copy of a view (the solver's state as the snapshot hvi-assess reads).
+template <template <template <class> class> class Fields>
+Fields<VectorOf> ownedOf(const Fields<ConstSpanOf>& view) {
+    Fields<VectorOf> data{};
+    const auto& from = FieldTable<Fields<ConstSpanOf>>::entries;
+    const auto& to = FieldTable<Fields<VectorOf>>::entries;
+    for (std::size_t i = 0; i < from.size(); ++i) {
+        std::visit(
+            [&](auto source) {
+                using T = typename std::remove_cvref_t<decltype(view.*source)>::value_type;
+                const std::span<const T> span = view.*source;
+                auto& into = data.*std::get<std::vector<T> Fields<VectorOf>::*>(to[i].member);
+                into.resize(span.size());
+                std::copy_n(span.data(), span.size(), into.data());
+            },
+            from[i].member);
+    }
+    return data;
+}
+
+inline FeFields ownedOf(const FeFieldsView& view) {
+    return FeFields{ownedOf(view.nodes), ownedOf(view.elements)};
 }
 
 /// Row k of a history read back (to write it again).

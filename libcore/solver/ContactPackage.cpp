@@ -1,5 +1,6 @@
 #include "solver/ContactPackage.hpp"
 
+#include "core/Error.hpp"
 #include "io/CheckpointFields.hpp"
 
 namespace hvi::solver {
@@ -32,9 +33,14 @@ void ContactPackage::save(io::CheckpointState& s) const {
 }
 
 void ContactPackage::restore(const io::CheckpointState& s) {
-    const auto& stored = s.ints.at("contact_flags");
+    // The flags' count follows the contact points of the last step, not a fixed set.
+    const auto stored = s.ints.find("contact_flags");
+    if (stored == s.ints.end()) {
+        throw InputError("<checkpoint>", "/contact_flags", "missing",
+                         "a checkpoint written by this version of hvi-run");
+    }
     m_contact.restoreState(io::timeStepOf(s, "contact_dt_us"),
-                           std::vector<uint8_t>(stored.begin(), stored.end()));
+                           std::vector<uint8_t>(stored->second.begin(), stored->second.end()));
     m_contact.restoreDissipatedEnergy(s.extra.at("contact_heat_J"));
     m_contact.restoreFreeNodeHeat(s.extra.value("free_node_heat_J", 0.0));
 }

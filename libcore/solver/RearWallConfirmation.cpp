@@ -2,6 +2,7 @@
 
 #include "assess/MaterialItems.hpp"
 #include "assess/RearWallPerforation.hpp"
+#include "solver/StateView.hpp"
 
 namespace hvi::solver {
 
@@ -11,42 +12,17 @@ io::Snapshot snapshotOf(double timeUs, long step, const sph::ParticleSet& ps,
     s.info.timeUs = timeUs;
     s.info.step = step;
     s.info.particleCount = ps.size();
-    auto& p = s.particles;
-    p.z = ps.z;
-    p.r = ps.r;
-    p.vz = ps.vz;
-    p.vr = ps.vr;
-    p.mass = ps.mass;
-    p.density = ps.rho;
-    p.pressure = ps.p;
-    p.internalEnergy = ps.e;
-    p.smoothingLength = ps.h;
-    p.bodyId = ps.body;
-    p.alive = ps.alive;
-    if (ps.hasStrength()) {
-        p.damage = ps.damage;
-        p.plasticStrain = ps.plasticStrain;
-    }
+    std::vector<double> deviator;
+    const io::ParticleFieldsView particles = particleFieldsOf(ps, deviator);
+    s.particles = io::ownedOf(particles);
     if (fe) {
-        io::FeFields f;
-        const auto& nd = fe->nodes();
-        const auto& el = fe->elements();
-        f.nodes.z = nd.z;
-        f.nodes.r = nd.r;
-        f.nodes.vz = nd.vz;
-        f.nodes.vr = nd.vr;
-        f.nodes.mass = nd.mass;
-        f.elements.connectivity = el.connectivity;
-        f.elements.alive = el.alive;
-        f.elements.damage = el.damage;
-        f.elements.plasticStrain = el.plasticStrain;
-        f.elements.pressure = el.p;
-        f.elements.density = el.rho;
-        f.elements.bodyId = el.body;
+        // The stored geometric strain: the rule does not read it, and the current one costs a
+        // pass over every element (fe::FeSolid::erosionStrain).
+        const io::FeFieldsView elements = feFieldsOf(*fe, fe->elements().geometricStrain);
+        s.fe = io::ownedOf(elements);
         s.info.hasFe = true;
-        s.info.nodeCount = nd.size();
-        s.info.elementCount = el.size();
-        s.fe = std::move(f);
+        s.info.nodeCount = fe->nodes().size();
+        s.info.elementCount = fe->elements().size();
     }
     return s;
 }
