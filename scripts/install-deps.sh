@@ -8,6 +8,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libvalijson-dev libeigen3-dev
   libhdf5-dev hdf5-tools libgmsh-dev libcairo2-dev
   libgtest-dev libgmock-dev
+  clang libclang-rt-14-dev libomp-dev # the sanitizer and fuzz build (scripts/build-sanitize.sh)
 )
 
 missing=()

@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (issue #25): builds
-# ./build-sanitize (RelWithDebInfo, -fsanitize=address,undefined, any report fatal) and runs
-# the tests there. By default the unit tests and the CLI tests of hostile input and the run
-# loop (CI runs this reduced set after the main suite); `--all` runs every test, the
-# verification scenes included (about an hour on 2 cores).
+# ./build-sanitize (scripts/build-sanitize.sh: clang, any report fatal) and runs the tests
+# there. By default the unit tests and the CLI tests of hostile input and the run loop (CI
+# runs this reduced set after the main suite, then scripts/fuzz.sh); `--all` runs every test,
+# the verification scenes included.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHVI_SANITIZE=ON \
-  -DHVI_WERROR=OFF >/dev/null # GCC 12 warns falsely inside std::regex and std::function under the sanitizers
-cmake --build build-sanitize -j "$jobs"
+if [ "${1:-}" = "--all" ]; then
+  bash scripts/build-sanitize.sh
+else
+  bash scripts/build-sanitize.sh --reduced
+fi
 # Leak checking stays on; OpenMP's runtime keeps its thread pool to exit, which LSan reports.
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/sanitizer-suppressions.txt"

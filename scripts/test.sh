@@ -1,7 +1,12 @@
 #!/usr/bin/env bash
-# The README's test command: installs what is missing, builds, runs the whole suite (CTest).
+# The README's test command: installs what is missing, builds, runs the whole suite (CTest),
+# then the reduced sanitizer and fuzz jobs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j "$(nproc 2>/dev/null || echo 2)"
+# The reduced sanitizer and fuzz jobs (docs/reliability.md): the unit tests and the CLI tests
+# of hostile input under AddressSanitizer and UBSan, then each fuzz target for 45 s.
+bash scripts/test-sanitizers.sh
+bash scripts/fuzz.sh --seconds 45

@@ -5,6 +5,7 @@
 #include "core/Units.hpp"
 #include "io/AtomicOutput.hpp"
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 #include "plot/XyPlot.hpp"
 
 #include <cstdio>
@@ -250,7 +251,7 @@ void BleSizeTool::execute() {
         }
         plot::writePlot(p, m_plot);
     }
-    io::writeTextAtomically(m_output, sizing.dump(2) + "\n");
+    io::writeTextAtomically(m_output, io::jsonText(sizing, 2) + "\n");
     if (!quiet() && sizing.contains("performance")) {
         const auto& perf = sizing["performance"];
         char line[256];

@@ -6,6 +6,7 @@
 #include "assess/Verdict.hpp"
 #include "io/AtomicOutput.hpp"
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 #include "io/RunFileReader.hpp"
 
 #include <cmath>
@@ -175,7 +176,7 @@ void HviAssessTool::execute() {
         }
         verdict["pictures"] = assess::writePictures(assessment, pictureIndices, po);
     }
-    io::writeTextAtomically(m_output, verdict.dump(2) + "\n");
+    io::writeTextAtomically(m_output, io::jsonText(verdict, 2) + "\n");
     info(m_run + ": " + summaryLine(verdict));
     if (expectation) {
         // The result of the check the user asked for: printed even with --quiet.

@@ -1,11 +1,12 @@
 #include "app/HviRunTool.hpp"
 
 #include "app/BuiltinCases.hpp"
+#include "app/RunScene.hpp"
 #include "geometry/GmshMesher.hpp"
 #include "io/Checkpoint.hpp"
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 #include "io/RunLock.hpp"
-#include "scene/BodyLayout.hpp"
 #include "scene/PointBudget.hpp"
 #include "scene/Scene.hpp"
 #include "scene/SceneLibrary.hpp"
@@ -111,6 +112,9 @@ void HviRunTool::addOptions(CLI::App& app) {
     app.add_option("--benchmark-scene", m_benchmarkScene,
                    "Scenes timed by --benchmark: sph (all-SPH bumper), fe (FE bumper), or both")
         ->check(CLI::IsMember({"both", "sph", "fe"}));
+    app.add_flag("--check", m_check,
+                 "Read and check the scene (schema, materials, layout, point count against "
+                 "memory), print what would run on stdout and exit without running");
     app.add_flag("--list-materials", m_listMaterials, "List the built-in materials and exit");
 }
 
@@ -199,6 +203,29 @@ void HviRunTool::benchmark() {
     }
 }
 
+RunScene HviRunTool::loadScene() const {
+    RunScene loaded = loadRunScene(m_scene, {m_resolution, m_endTime, m_snapshotEvery, m_materials},
+                                   scene::availableMemoryBytes());
+    for (const auto& w : loaded.warnings) {
+        warn(m_scene + ": " + w);
+    }
+    return loaded;
+}
+
+void HviRunTool::checkScene() const {
+    const RunScene loaded = loadScene();
+    const scene::Scene& scene = loaded.scene;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "%s: scene '%s' can run: %zu bodies, about %.0f points (%.0f MB of %.0f MB "
+                  "available), spacing %g mm, to %g us\n",
+                  m_scene.c_str(), scene.id.c_str(), scene.bodies.size(), loaded.estimatedPoints,
+                  loaded.estimatedPoints * scene::kBytesPerPoint / 1e6,
+                  scene::availableMemoryBytes() / 1e6, scene.sph.particleSpacing,
+                  scene.run.endTime);
+    std::cout << line << std::flush;
+}
+
 void HviRunTool::execute() {
     if (m_threads > 0) {
         omp_set_num_threads(m_threads);
@@ -216,6 +243,10 @@ void HviRunTool::execute() {
     if (m_scene.empty()) {
         throw InputError("<flags>", "", "no scene file given", "hvi-run SCENE.json [-o RUN.h5]");
     }
+    if (m_check) {
+        checkScene();
+        return;
+    }
     const std::string output = runFileName(m_scene, m_output);
     refuseToOverwriteScene(m_scene, output);
     const io::RunLock lock(output); // one hvi-run per -o, until this one exits
@@ -226,41 +257,9 @@ void HviRunTool::execute() {
                              " to continue from",
                          "the checkpoint an interrupted run of this -o left, or no --resume");
     }
-    json doc = io::readJsonFile(m_scene);
-    if (!doc.is_object()) {
-        throw InputError(m_scene, "", "is not a JSON object", "a scene (hvi-run --print-schema)");
-    }
-    // Command-line overrides go into the document, so the run file records what ran.
-    if (m_resolution > 0.0) {
-        doc["sph"]["particle_spacing_mm"] = m_resolution;
-        if (doc.contains("fe") && doc["fe"].is_object() && doc["fe"].contains("element_size_mm")) {
-            doc["fe"]["element_size_mm"] = m_resolution; // else it follows the particle spacing
-        }
-        if (doc.contains("bodies") && doc["bodies"].is_array()) {
-            for (auto& body : doc["bodies"]) {
-                if (body.is_object() && body.contains("spacing_mm")) {
-                    body["spacing_mm"] = m_resolution;
-                }
-            }
-        }
-    }
-    if (m_endTime > 0.0) {
-        doc["run"]["end_time_us"] = m_endTime;
-    }
-    if (m_snapshotEvery > 0.0) {
-        doc["output"]["snapshot_every_us"] = m_snapshotEvery;
-    }
-    io::requireFiniteNumbers(doc, m_scene);
-    io::validateAgainstSchema(doc, "scene", m_scene);
-    auto library = scene::sceneLibrary(doc.value("materials", json::object()), m_scene);
-    if (!m_materials.empty()) {
-        library.merge(material::MaterialLibrary::fromFile(m_materials));
-    }
-    const scene::Scene scene = scene::parseScene(doc, m_scene, library.names());
-    scene::requirePointBudget(scene, m_scene, scene::availableMemoryBytes());
-    for (const auto& w : scene::bodyLayoutWarnings(scene)) {
-        warn(m_scene + ": " + w);
-    }
+    const RunScene loaded = loadScene();
+    const scene::Scene& scene = loaded.scene;
+    const material::MaterialLibrary& library = loaded.library;
 
     solver::Simulation sim(scene, library);
     json materials = json::object();
@@ -305,8 +304,8 @@ void HviRunTool::execute() {
     options.checkpointEverySeconds = m_checkpointEvery;
     options.resume = m_resume;
     const auto summary =
-        solver::runToCompletion(sim, scene.resolved.dump(), materials.dump(), prov, options,
-                                [this](const std::string& line) { info(line); });
+        solver::runToCompletion(sim, io::jsonText(scene.resolved), io::jsonText(materials), prov,
+                                options, [this](const std::string& line) { info(line); });
     // Throughput of what the scene holds: particle-steps, element-steps, or both.
     const double wall = std::max(summary.wallSeconds, 1e-9);
     std::string rates;

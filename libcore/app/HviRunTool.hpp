@@ -4,6 +4,7 @@
 // bumper case.
 #pragma once
 
+#include "app/RunScene.hpp"
 #include "tool/Tool.hpp"
 
 namespace hvi::app {
@@ -19,12 +20,14 @@ protected:
 
 private:
     void benchmark();
+    RunScene loadScene() const;
+    void checkScene() const;
 
     std::string m_scene, m_output, m_materials;
     int m_threads = 0;
     double m_resolution = 0.0, m_endTime = 0.0, m_snapshotEvery = 0.0;
     double m_checkpointEvery = 300.0;
-    bool m_resume = false, m_benchmark = false, m_listMaterials = false;
+    bool m_resume = false, m_benchmark = false, m_listMaterials = false, m_check = false;
     long m_benchmarkSteps = 200;
     std::string m_benchmarkScene = "both";
 };

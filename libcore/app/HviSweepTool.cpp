@@ -3,6 +3,7 @@
 #include "app/SweepBle.hpp"
 #include "io/AtomicOutput.hpp"
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 #include "plot/XyPlot.hpp"
 #include "sweep/SweepResults.hpp"
 #include "sweep/SweepSpec.hpp"
@@ -177,7 +178,7 @@ void HviSweepTool::init() {
                          "a new --out-dir, or the same settings as before");
     }
     fs::create_directories(m_outDir);
-    io::writeTextAtomically(file, spec.dump(2) + "\n");
+    io::writeTextAtomically(file, io::jsonText(spec, 2) + "\n");
     info(spec.at("id").get<std::string>() + " at " + std::to_string(m_speed) + " km/s: " +
          m_parameter + " from " + std::to_string(r.guessMm) + " mm (" + r.guessSource + ")");
 }
@@ -201,7 +202,8 @@ void HviSweepTool::next() {
     const sweep::SearchStep step = sweep::nextStep(sweep::settingsOf(spec), points);
     if (step.state != sweep::SearchState::RunNext) {
         io::writeTextAtomically(dir / "critical.json",
-                                sweep::criticalDocument(spec, step, records).dump(2) + "\n");
+                                io::jsonText(sweep::criticalDocument(spec, step, records), 2) +
+                                    "\n");
         info(dir.string() + ": " + sweep::toString(step.state) + " after " +
              std::to_string(points.size()) + " runs");
         return;
@@ -211,7 +213,7 @@ void HviSweepTool::next() {
     if (!fs::exists(point / "panel.json")) {
         io::writeTextAtomically(point / "writer", spec.at("writer").get<std::string>() + "\n");
         io::writeTextAtomically(point / "panel.json",
-                                sweep::pointPanel(spec, step.next).dump(2) + "\n");
+                                io::jsonText(sweep::pointPanel(spec, step.next), 2) + "\n");
     }
     info(dir.string() + ": run " + std::to_string(points.size() + 1) + ", " +
          point.filename().string());

@@ -1,6 +1,7 @@
 #include "app/HviValidateTool.hpp"
 
 #include "io/AtomicOutput.hpp"
+#include "io/JsonText.hpp"
 #include "plot/XyPlot.hpp"
 #include "validation/CaseInputs.hpp"
 #include "validation/ConvergenceReport.hpp"
@@ -128,9 +129,10 @@ void HviValidateTool::execute() {
         fs::create_directories(dir);
         // panel.json last: it is the workflow's target, so it exists only with the others.
         io::writeTextAtomically(dir / "constraints.json",
-                                validation::bleConstraints(*c).dump(2) + "\n");
+                                io::jsonText(validation::bleConstraints(*c), 2) + "\n");
         io::writeTextAtomically(dir / "writer", validation::sceneWriterOf(*c) + "\n");
-        io::writeTextAtomically(dir / "panel.json", validation::panelInput(*c).dump(2) + "\n");
+        io::writeTextAtomically(dir / "panel.json",
+                                io::jsonText(validation::panelInput(*c), 2) + "\n");
         info(c->id + ": " + validation::toString(c->shield) + ", test " + c->result + " -> " +
              dir.string());
         return;

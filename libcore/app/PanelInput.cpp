@@ -4,6 +4,7 @@
 #include "ble/BleMaterials.hpp"
 #include "geometry/InputChecks.hpp"
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -58,11 +59,11 @@ json fromSizing(const json& sizing, const std::string& file, const PanelInputKin
     if (threat.contains("angle_deg")) {
         const json& angle = threat["angle_deg"];
         if (!angle.is_number() || angle.get<double>() != 0.0) {
-            issues.push_back(
-                {file, "/threat/angle_deg",
-                 "is " + angle.dump() + ": a 2D axisymmetric scene holds only a normal impact",
-                 "0 (impact along the panel normal); size oblique impacts with "
-                 "ble-size only"});
+            issues.push_back({file, "/threat/angle_deg",
+                              "is " + io::jsonText(angle) +
+                                  ": a 2D axisymmetric scene holds only a normal impact",
+                              "0 (impact along the panel normal); size oblique impacts with "
+                              "ble-size only"});
         }
         threat.erase("angle_deg");
     }
@@ -75,7 +76,8 @@ json fromSizing(const json& sizing, const std::string& file, const PanelInputKin
         threat.erase("density_g_cm3"); // the material's own density: nothing to say
     }
     if (threat.contains("density_g_cm3")) {
-        notes.push_back("threat density_g_cm3 = " + threat["density_g_cm3"].dump() + " in " + file +
+        notes.push_back("threat density_g_cm3 = " + io::jsonText(threat["density_g_cm3"]) + " in " +
+                        file +
                         " is not carried into the scene: hvi-run takes the projectile density "
                         "from its material ('" +
                         threat.value("material", std::string("Al6061-T6")) + "')");
@@ -94,7 +96,7 @@ json fromSizing(const json& sizing, const std::string& file, const PanelInputKin
             expected += (expected.empty() ? "\"" : " or \"") + t + "\"";
         }
         issues.push_back({file, "/panel/type",
-                          type.is_null() ? "required key is missing" : "is " + type.dump(),
+                          type.is_null() ? "required key is missing" : "is " + io::jsonText(type),
                           expected + " (" + kind.otherTypesHint + ")"});
     }
     if (types.size() == 1) {

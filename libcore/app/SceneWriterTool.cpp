@@ -4,6 +4,7 @@
 #include "geometry/InputChecks.hpp"
 #include "io/AtomicOutput.hpp"
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 #include "scene/Defaults.hpp"
 
 #include <cmath>
@@ -163,7 +164,7 @@ void SceneWriterTool::execute() {
     io::AtomicOutput sceneOut(m_output);
     {
         std::ofstream out(sceneOut.tempPath(), std::ios::binary);
-        out << result.scene.dump(2) << "\n";
+        out << io::jsonText(result.scene, 2) << "\n";
         out.flush();
         if (!out) {
             throw RuntimeFailure("cannot write " + sceneOut.tempPath().string());

@@ -1,6 +1,7 @@
 #include "assess/Expectation.hpp"
 
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -53,7 +54,7 @@ std::string valueText(const json& v) {
     if (v.is_string()) {
         return v.get<std::string>();
     }
-    return v.dump();
+    return io::jsonText(v);
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "io/AtomicOutput.hpp"
 #include "io/Hdf5.hpp"
+#include "io/JsonText.hpp"
 
 namespace hvi::io {
 
@@ -87,9 +88,7 @@ void writeCheckpoint(const fs::path& path, const CheckpointState& state) {
         h5::writeAttribute(file.get(), "Step", state.step);
         writeArrays(file.get(), "doubles", state.doubles, ElementType::Float64);
         writeArrays(file.get(), "ints", state.ints, ElementType::Int32);
-        h5::writeStringDataset(
-            file.get(), "extra",
-            state.extra.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+        h5::writeStringDataset(file.get(), "extra", jsonText(state.extra));
         if (!file.reset()) {
             h5::failWrite(what);
         }
@@ -125,11 +124,11 @@ CheckpointState readCheckpoint(const fs::path& path) {
     };
     const auto format = attribute("Format", kExpectCheckpoint);
     if (format != "hvi-checkpoint") {
-        throw InputError(label, "/@Format", "is " + format.dump(), "\"hvi-checkpoint\"");
+        throw InputError(label, "/@Format", "is " + jsonText(format), "\"hvi-checkpoint\"");
     }
     const auto version = attribute("FormatVersion", "an integer");
     if (!version.is_number_integer() || version.get<long>() > kCheckpointFormatVersion) {
-        throw InputError(label, "/@FormatVersion", "is " + version.dump(),
+        throw InputError(label, "/@FormatVersion", "is " + jsonText(version),
                          "a format version up to " + std::to_string(kCheckpointFormatVersion));
     }
     const auto time = attribute("Time", "checkpoint time [us]");

@@ -1,6 +1,7 @@
 #include "io/Hdf5.hpp"
 
 #include "core/Error.hpp"
+#include "io/JsonText.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -210,8 +211,7 @@ void writeJsonAttribute(hid_t object, const std::string& name, const nlohmann::j
         writeAttribute(object, name, value.get<double>());
     } else {
         // Invalid UTF-8 in a string must not make the end of a run fail: replace it.
-        writeAttribute(object, name,
-                       value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+        writeAttribute(object, name, jsonText(value));
     }
 }
 

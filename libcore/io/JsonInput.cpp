@@ -1,5 +1,6 @@
 #include "io/JsonInput.hpp"
 
+#include "io/JsonText.hpp"
 #include "io/JsonTextScan.hpp"
 #include "io/Resources.hpp"
 
@@ -205,7 +206,7 @@ std::string describe(const json& root, const json* raw) {
     std::string text = raw->value("description", node->value("description", ""));
     auto addBound = [&](const char* key, const char* op) {
         if (node->contains(key)) {
-            text += (text.empty() ? "" : ", ") + std::string(op) + " " + (*node)[key].dump();
+            text += (text.empty() ? "" : ", ") + std::string(op) + " " + jsonText((*node)[key]);
         }
     };
     addBound("exclusiveMinimum", ">");
@@ -215,7 +216,7 @@ std::string describe(const json& root, const json* raw) {
     if (node->contains("enum")) {
         std::string choices;
         for (const auto& v : (*node)["enum"]) {
-            choices += (choices.empty() ? "" : ", ") + v.dump();
+            choices += (choices.empty() ? "" : ", ") + jsonText(v);
         }
         text += (text.empty() ? "one of " : "; one of ") + choices;
     }
@@ -274,7 +275,7 @@ std::string rewriteProblem(const std::string& description, const json& document,
     std::string problem = description;
     try {
         const json& value = document.at(json::json_pointer(pointer));
-        problem += " (got " + value.dump() + ")";
+        problem += " (got " + jsonText(value) + ")";
     } catch (...) {
     }
     return problem;

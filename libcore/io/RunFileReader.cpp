@@ -1,6 +1,7 @@
 #include "io/RunFileReader.hpp"
 
 #include "io/Hdf5.hpp"
+#include "io/JsonText.hpp"
 #include "io/RunFileWriter.hpp"
 
 #include <algorithm>
@@ -120,12 +121,12 @@ RunFileReader::RunFileReader(fs::path path) : m_impl(std::make_unique<Impl>()) {
     const auto format = h5::readAttribute(file, "Format", im.label, "/");
     if (!format || *format != "hvi-run") {
         throw InputError(im.label, "/@Format",
-                         format ? "is " + format->dump() : std::string("missing"),
+                         format ? "is " + jsonText(*format) : std::string("missing"),
                          "\"hvi-run\": " + std::string(kExpectRunFile));
     }
     const auto version = im.requiredAttribute(file, "/", "FormatVersion", "an integer");
     if (!version.is_number_integer() || version.get<long>() > kRunFileFormatVersion) {
-        throw InputError(im.label, "/@FormatVersion", "is " + version.dump(),
+        throw InputError(im.label, "/@FormatVersion", "is " + jsonText(version),
                          "a format version up to " + std::to_string(kRunFileFormatVersion) +
                              " (a newer hvi-run wrote this file)");
     }

@@ -4,6 +4,7 @@
 #include "core/Error.hpp"
 #include "io/AtomicOutput.hpp"
 #include "io/Hdf5.hpp"
+#include "io/JsonText.hpp"
 #include "io/RunFileXdmf.hpp"
 
 #include <cstdio>
@@ -259,9 +260,7 @@ RunFileWriter::RunFileWriter(fs::path finalPath, const std::string& sceneJson,
     writeTextDataset(file, "materials", materialsJson,
                      "The material models and parameters the run used (JSON text)");
     writeTextDataset(file, "provenance",
-                     provenance.is_null()
-                         ? std::string("{}")
-                         : provenance.dump(2, ' ', false, nlohmann::json::error_handler_t::replace),
+                     provenance.is_null() ? std::string("{}") : jsonText(provenance, 2),
                      "Provenance of the run: tool, version, input file, resolved input "
                      "(JSON text)");
     im.writeCode(provenance);

@@ -9,6 +9,7 @@
 #include "core/Error.hpp"
 #include "core/Units.hpp"
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 #include "io/Resources.hpp"
 
 #include <algorithm>
@@ -401,7 +402,7 @@ void readMaterial(const json& entry, const std::string& name, const std::string&
     }
     spec.name = name;
     spec.description = m.text("description", "one-line description of the material");
-    spec.definitionJson = entry.dump();
+    spec.definitionJson = io::jsonText(entry);
 
     const bool hasEos = m.readSection("eos", "equation-of-state object", [&](Section& s) {
         if (auto eos = readEos(s, spec.referenceDensity)) {

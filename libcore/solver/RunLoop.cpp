@@ -4,6 +4,7 @@
 #include "core/Fingerprint.hpp"
 #include "io/AtomicOutput.hpp"
 #include "io/Checkpoint.hpp"
+#include "io/JsonText.hpp"
 #include "io/RunFileReader.hpp"
 #include "solver/StateView.hpp"
 
@@ -84,7 +85,7 @@ std::string sceneFingerprint(const std::string& sceneText, const std::string& ma
         }
     }
     scene.erase("output");
-    return core::fingerprint(scene.dump() + '\n' + materialsText);
+    return core::fingerprint(io::jsonText(scene) + '\n' + materialsText);
 }
 
 /// Where the run's output schedule stands at a checkpoint: the snapshots and history rows

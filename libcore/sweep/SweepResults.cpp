@@ -1,6 +1,7 @@
 #include "sweep/SweepResults.hpp"
 
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 #include "sweep/SweepSpec.hpp"
 #include "validation/ValidationCase.hpp"
 
@@ -33,7 +34,7 @@ std::string cell(const json& v) {
     } else if (v.is_string()) {
         s << v.get<std::string>();
     } else {
-        s << v.dump();
+        s << io::jsonText(v);
     }
     return s.str();
 }

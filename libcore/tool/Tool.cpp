@@ -3,6 +3,7 @@
 #include "core/BuildInfo.hpp"
 #include "io/Hdf5.hpp"
 #include "io/JsonInput.hpp"
+#include "io/JsonText.hpp"
 
 #include <exception>
 #include <iostream>
@@ -43,6 +44,7 @@ int Tool::reportInputError(const InputError& error) const {
 }
 
 int Tool::run(int argc, char** argv) {
+    m_internalError = false;
     io::h5::skipCleanupAtExit(); // a failed write must not turn exit 3 into a crash at exit
     CLI::App app{m_summary, m_name};
     app.set_version_flag("--version", m_name + " " + versionString());
@@ -73,7 +75,7 @@ int Tool::run(int argc, char** argv) {
     }
     try {
         if (m_printSchema) {
-            std::cout << io::schema(inputSchemaName()).dump(2) << "\n";
+            std::cout << io::jsonText(io::schema(inputSchemaName()), 2) << "\n";
             return static_cast<int>(ExitCode::Ok);
         }
         execute();
@@ -87,6 +89,7 @@ int Tool::run(int argc, char** argv) {
         std::cerr << m_name << ": error: " << e.what() << "\n";
         return static_cast<int>(ExitCode::RuntimeFailure);
     } catch (const std::exception& e) {
+        m_internalError = true;
         std::cerr << m_name << ": internal error: " << e.what() << "\n";
         return static_cast<int>(ExitCode::RuntimeFailure);
     }

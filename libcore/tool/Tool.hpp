@@ -25,6 +25,9 @@ public:
 
     /// Parses argv, runs, and returns the process exit code. Never throws.
     int run(int argc, char** argv);
+    /// Whether the last run() ended on an exception outside the error contract (reported as
+    /// "internal error", exit 3): a defect, which the fuzz targets treat as a crash.
+    bool endedOnInternalError() const { return m_internalError; }
 
 protected:
     /// Declare the tool's own options (with units and ranges in their help text).
@@ -62,6 +65,7 @@ private:
     bool m_quiet = false;
     bool m_printSchema = false;
     bool m_checkFailed = false;
+    bool m_internalError = false;
     FiniteFlags m_finiteFlags;
 };
 

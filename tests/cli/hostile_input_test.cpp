@@ -187,6 +187,16 @@ TEST(HostileInput, DirectoryIsCalledADirectory) {
     EXPECT_TRUE(oneLine(r, 2, "hvi-assess: " + directory.string() + ": /: is a directory"));
 }
 
+// A file name that is not UTF-8 (written in another encoding) ended every tool on an internal
+// error when its output's provenance was written; the bad bytes now come out as U+FFFD.
+TEST(HostileInput, AFileNameThatIsNotUtf8IsKept) {
+    const auto input = writeTemp("latin1-\xe9.json", kConstraints);
+    const auto output = freshOutput("latin1.sizing.json");
+    const auto r = runTool("ble-size", "'" + input.string() + "' -q -o " + output.string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(readFileText(output).find("latin1-\ufffd.json"), std::string::npos);
+}
+
 // Item 8: d_c = inf was written as null and called NP, exit 0.
 TEST(HostileInput, InfiniteCriticalDiameterIsAComputationFailure) {
     const auto input = writeTemp("inf.json", replaced(kConstraints, "50.8", "1e308"));

@@ -69,6 +69,28 @@ void expectRejected(const std::string& runArg, const std::string& args,
     }
 }
 
+/// Replaces the attribute `name` of the object at `path` with a fixed-length string of
+/// `bytes`, written as they are (no check that they are UTF-8).
+void writeRawStringAttribute(const fs::path& run, const char* path, const char* name,
+                             const std::string& bytes) {
+    const hid_t file = H5Fopen(run.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    const hid_t object = H5Oopen(file, path, H5P_DEFAULT);
+    ASSERT_GE(object, 0);
+    H5Adelete(object, name);
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, bytes.size() + 1);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attr = H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(attr, 0);
+    ASSERT_GE(H5Awrite(attr, type, bytes.c_str()), 0);
+    H5Aclose(attr);
+    H5Sclose(space);
+    H5Tclose(type);
+    H5Oclose(object);
+    H5Fclose(file);
+}
+
 } // namespace
 
 TEST(HviAssessCli, GoodRunGivesASchemaValidVerdict) {
@@ -166,6 +188,27 @@ TEST(HviAssessCli, MissingDatasetIsNamed) {
     H5Fclose(file);
     expectRejected(run.string(), "",
                    "hvi-assess: " + run.string() + ": /snapshots/000002/Density: missing");
+}
+
+// A string attribute that is not UTF-8 (a damaged or foreign file) used to end hvi-assess on
+// an internal error when the verdict was written (found by tests/fuzz, issue #25); its bad
+// bytes now come out as U+FFFD.
+TEST(HviAssessCli, TextThatIsNotUtf8IsKeptReadable) {
+    const auto run = writeRun("cli_not_utf8.h5");
+    writeRawStringAttribute(run, "/run", "min_dt_limiter",
+                            "\x87\xa0"
+                            "3");
+    const auto out = freshOutput("cli_not_utf8.json");
+    const auto r = runTool("hvi-assess", run.string() + " -q -o " + out.string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(readJson(out)["run"]["min_dt_limiter"], "\ufffd\ufffd3") << r.err;
+}
+
+// The same in the message naming a wrong /@Format.
+TEST(HviAssessCli, AFormatThatIsNotUtf8IsNamed) {
+    const auto run = writeRun("cli_format_not_utf8.h5");
+    writeRawStringAttribute(run, "/", "Format", "\xe3\xe3");
+    expectRejected(run.string(), "", ": /@Format: is \"\ufffd");
 }
 
 TEST(HviAssessCli, NotHdf5IsNamed) {

@@ -135,6 +135,31 @@ TEST(HviRunCli, BadScenesAreRejectedWithoutOutput) {
     }
 }
 
+// --check reads and checks a scene as a run would and runs nothing: the same refusals (the
+// overlapping bodies of issue #25, item 3, here), and for a good scene one line on stdout with
+// what would run; no run file, mesh, lock or checkpoint is written.
+TEST(HviRunCli, CheckReadsTheSceneAndRunsNothing) {
+    const auto scene = writeTemp("check.json", kScene);
+    const auto run = std::filesystem::path(scene).replace_extension(".h5");
+    std::filesystem::remove(run);
+    const auto ok = runTool("hvi-run", scene.string() + " --check");
+    EXPECT_EQ(ok.exitCode, 0) << ok.err;
+    EXPECT_NE(ok.out.find("scene 'cli-small' can run: 2 bodies, about "), std::string::npos)
+        << ok.out;
+    EXPECT_NE(ok.out.find("spacing 0.08 mm, to 0.3 us"), std::string::npos) << ok.out;
+    for (const char* ext : {".h5", ".msh", ".lock", ".ckpt.h5", ".xmf"}) {
+        EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(scene).replace_extension(ext)))
+            << ext;
+    }
+    std::string overlapping = kScene;
+    overlapping.replace(overlapping.find("\"center_z_mm\": -0.6"), 19, "\"center_z_mm\": 0.25");
+    const auto bad = writeTemp("check-overlap.json", overlapping);
+    const auto refused = runTool("hvi-run", bad.string() + " --check");
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find(": /bodies/"), std::string::npos) << refused.err;
+    EXPECT_TRUE(refused.out.empty()) << refused.out;
+}
+
 // --resume with nothing to resume from used to start the run afresh without a word (issue #25).
 TEST(HviRunCli, ResumeWithoutACheckpointIsRefused) {
     const auto scene = writeTemp("noresume.json", kScene);
