@@ -34,6 +34,17 @@ std::optional<json> readIfPresent(const fs::path& path) {
     return io::readJsonFile(path.string());
 }
 
+/// The member `key` of `object`, or null when it is absent or `object` is no object (a
+/// const operator[] on an absent key is undefined behaviour in nlohmann::json).
+const json& member(const json& object, const char* key) {
+    static const json absent;
+    if (!object.is_object()) {
+        return absent;
+    }
+    const auto it = object.find(key);
+    return it == object.end() ? absent : *it;
+}
+
 std::string fmt(const char* format, double value) {
     char buf[64];
     std::snprintf(buf, sizeof buf, format, value);
@@ -49,33 +60,35 @@ Row readRow(const Case& c, const fs::path& dir) {
                              "is missing: the verdict predates the damage grades",
                              "a verdict of this hvi-assess (delete it and rerun make validate)");
         }
-        if ((*v)["verdict"].is_string()) {
-            row.ours = (*v)["verdict"].get<std::string>();
-            row.grade = (*v)["damage_grade"].is_string() ? (*v)["damage_grade"].get<std::string>()
-                                                         : std::string();
-            row.final = (*v)["verdict_final"] == true;
-            row.axisOnly = (*v)["axis_band_only"] == true;
+        if (member(*v, "verdict").is_string()) {
+            row.ours = member(*v, "verdict").get<std::string>();
+            row.grade = member(*v, "damage_grade").is_string()
+                            ? member(*v, "damage_grade").get<std::string>()
+                            : std::string();
+            row.final = member(*v, "verdict_final") == true;
+            row.axisOnly = member(*v, "axis_band_only") == true;
         }
-        if ((*v)["wall_time_s"].is_number()) {
-            row.wallS = (*v)["wall_time_s"].get<double>();
+        if (member(*v, "wall_time_s").is_number()) {
+            row.wallS = member(*v, "wall_time_s").get<double>();
         }
-        row.complete = (*v)["complete"] == true;
-        if ((*v)["solver"].is_object() && (*v)["solver"]["git"].is_string()) {
-            row.solver = (*v)["solver"]["git"].get<std::string>();
+        row.complete = member(*v, "complete") == true;
+        if (member(*v, "solver").is_object() && member(member(*v, "solver"), "git").is_string()) {
+            row.solver = member(member(*v, "solver"), "git").get<std::string>();
         }
-        if ((*v)["final_time_us"].is_number()) {
-            row.endUs = (*v)["final_time_us"].get<double>();
+        if (member(*v, "final_time_us").is_number()) {
+            row.endUs = member(*v, "final_time_us").get<double>();
         }
-        if ((*v)["energy_error"].is_number()) {
-            row.energyError = (*v)["energy_error"].get<double>();
+        if (member(*v, "energy_error").is_number()) {
+            row.energyError = member(*v, "energy_error").get<double>();
         }
     }
     if (const auto b = readIfPresent(dir / "ble.json")) {
-        const json& perf = (*b)["performance"];
-        if (perf.is_object() && perf["verdict"].is_string()) {
-            row.ble = perf["verdict"].get<std::string>();
-            if (perf["critical_over_projectile_diameter"].is_number()) {
-                row.bleRatio = 1.0 / perf["critical_over_projectile_diameter"].get<double>();
+        const json& perf = member(*b, "performance");
+        if (perf.is_object() && member(perf, "verdict").is_string()) {
+            row.ble = member(perf, "verdict").get<std::string>();
+            if (member(perf, "critical_over_projectile_diameter").is_number()) {
+                row.bleRatio =
+                    1.0 / member(perf, "critical_over_projectile_diameter").get<double>();
             }
         }
     }
