@@ -221,8 +221,7 @@ void HviRunTool::checkScene() const {
                   "available), spacing %g mm, to %g us\n",
                   m_scene.c_str(), scene.id.c_str(), scene.bodies.size(), loaded.estimatedPoints,
                   loaded.estimatedPoints * scene::kBytesPerPoint / 1e6,
-                  scene::availableMemoryBytes() / 1e6, scene.sph.particleSpacing,
-                  scene.run.endTime);
+                  loaded.memoryLimitBytes / 1e6, scene.sph.particleSpacing, scene.run.endTime);
     std::cout << line << std::flush;
 }
 

@@ -53,8 +53,9 @@ RunScene loadRunScene(const std::string& file, const SceneOverrides& overrides,
     scene::requirePointBudget(parsed, file, memoryLimitBytes);
     const auto points = scene::estimatedPoints(parsed);
     auto warnings = scene::bodyLayoutWarnings(parsed);
-    return {std::move(doc), std::move(library), std::move(parsed),
-            std::accumulate(points.begin(), points.end(), 0.0), std::move(warnings)};
+    return {std::move(library), std::move(parsed),
+            std::accumulate(points.begin(), points.end(), 0.0), memoryLimitBytes,
+            std::move(warnings)};
 }
 
 } // namespace hvi::app

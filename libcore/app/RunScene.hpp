@@ -24,10 +24,10 @@ struct SceneOverrides {
 };
 
 struct RunScene {
-    nlohmann::json document; ///< the scene as read, with the overrides
     material::MaterialLibrary library;
     scene::Scene scene;
     double estimatedPoints = 0.0;      ///< SPH particles, FE elements and their slots
+    double memoryLimitBytes = 0.0;     ///< what the point budget was checked against
     std::vector<std::string> warnings; ///< legal but most likely a mistake
 };
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 
 namespace hvi::solver {
 
@@ -14,7 +15,8 @@ namespace {
 
 constexpr double kAxisClearance = 0.1; ///< particles are kept at r >= 0.1 h (Spheral's eta_min)
 
-sph::HydroOptions hydroOptionsOf(const scene::Scene& scene) {
+sph::HydroOptions hydroOptionsOf(const scene::Scene& scene,
+                                 const std::vector<material::MaterialSpec>& specs) {
     sph::HydroOptions hydro;
     hydro.axisymmetric = scene.geometry == scene::Geometry::Axisymmetric;
     hydro.kernel = sph::kernelTypeFromName(scene.sph.kernel);
@@ -22,6 +24,12 @@ sph::HydroOptions hydroOptionsOf(const scene::Scene& scene) {
     hydro.avBeta = scene.sph.avBeta;
     hydro.artificialStress = scene.sph.artificialStress;
     hydro.spacingOverH = 1.0 / scene.sph.smoothingLengthFactor;
+    // Solids (an equation of state with a reference state) take the pairwise density rate
+    // at a density contrast; a gas keeps the corrected one (sph/SphHydro.hpp, Continuity).
+    for (const auto& spec : specs) {
+        hydro.pairwiseContinuityAtContrast.push_back(
+            std::holds_alternative<material::IdealGas>(spec.eos) ? 0 : 1);
+    }
     return hydro;
 }
 
@@ -48,7 +56,7 @@ SphPackage::SphPackage(const scene::Scene& scene, ParticleState& points,
                        const std::vector<material::MaterialSpec>& specs,
                        std::vector<material::BodyMaterial> bodies, bool skipDormant)
     : m_scene(scene), m_points(points), m_fills(fills), m_specs(specs),
-      m_materials(std::move(bodies)), m_hydro(hydroOptionsOf(scene)) {
+      m_materials(std::move(bodies)), m_hydro(hydroOptionsOf(scene, specs)) {
     m_searchOptions.axisymmetric = scene.geometry == scene::Geometry::Axisymmetric;
     m_searchOptions.kernelSupport = sph::kKernelSupport;
     m_searchOptions.skipDormant = skipDormant;

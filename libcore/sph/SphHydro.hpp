@@ -41,7 +41,16 @@
 //   mu = hbar v_ij.x_ij / (|x_ij|^2 + eta^2 hbar^2).
 // Velocity gradient: SPH estimate with particle volumes V_j = A_j / rho_j and the linear
 // correction matrix (Randles & Libersky 1996; Spheral's correctVelocityGradient), exact for
-// linear velocity fields. Continuity: drho/dt = -rho (tr L + D_thth) with D_thth = v_r g_r.
+// linear velocity fields. Continuity: drho/dt = -rho (tr L + D_thth) with D_thth = v_r g_r,
+// except where a solid particle's neighbours differ from it in density by more than 1.5
+// (fragmented debris beside compressed material): there drho/dt = sum_j A_j v_ij . grad W
+// - rho D_thth, the pairwise rate the compatible energy equation pays pressure work for.
+// The corrected, volume-weighted divergence weighs an expanded neighbour by the void it
+// spans (V_j = A_j / rho_j) and, with few neighbours on one side, turns their sliding into
+// compression: debris particles then reached the density ceiling at 1-5 MJ/kg (250-580
+// GPa, kept once isolated) and others fell to -3 MJ/kg (tests/verification/
+// StrayStates_test.cpp). A gas keeps the corrected rate everywhere: the Noh problem's
+// sixteenfold shock needs it at its front (13.1 instead of 16 with the pairwise rate).
 // Tensile instability (particles in tension clump and the material tears too early):
 // Monaghan's artificial stress (Monaghan 2000, JCP 159:290; Gray, Monaghan & Swift 2001,
 // CMAME 190:6641, eqs. 23-27 for elastic solids). Each particle carries R_i, the tensile part
@@ -63,6 +72,9 @@
 #include "sph/NeighbourSearch.hpp"
 #include "sph/ParticleSet.hpp"
 
+#include <cstdint>
+#include <vector>
+
 namespace hvi::sph {
 
 struct HydroOptions {
@@ -76,6 +88,10 @@ struct HydroOptions {
     /// The particle spacing in units of h (1 / smoothing_length_factor): the distance at
     /// which the artificial stress has its full strength.
     double spacingOverH = 1.0 / 1.3;
+    /// Per scene body: 1 where the body's particles take the pairwise density rate when a
+    /// neighbour's density differs from theirs by more than 1.5 (header comment,
+    /// Continuity); empty or 0: always the corrected one.
+    std::vector<uint8_t> pairwiseContinuityAtContrast;
 };
 
 /// What a particle contributes to its neighbours' sums, packed so a neighbour is two cache

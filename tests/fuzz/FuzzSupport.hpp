@@ -21,16 +21,22 @@
 
 namespace hvi::fuzz {
 
-/// A scratch directory of this process (under TMPDIR), made on first use.
+/// A scratch directory of this process (under TMPDIR), made on first use and removed when
+/// the process exits normally (libFuzzer's -runs and -max_total_time end through exit()).
+/// The path is never destroyed, so the exit handler can still read it.
 inline const std::filesystem::path& scratch() {
-    static const std::filesystem::path dir = [] {
+    static const std::filesystem::path* const dir = [] {
         const char* tmp = std::getenv("TMPDIR");
-        auto d = std::filesystem::path(tmp && *tmp ? tmp : "/tmp") /
-                 ("hvi-fuzz-" + std::to_string(::getpid()));
-        std::filesystem::create_directories(d);
+        auto* d = new std::filesystem::path(std::filesystem::path(tmp && *tmp ? tmp : "/tmp") /
+                                            ("hvi-fuzz-" + std::to_string(::getpid())));
+        std::filesystem::create_directories(*d);
+        std::atexit([] {
+            std::error_code ignored;
+            std::filesystem::remove_all(scratch(), ignored);
+        });
         return d;
     }();
-    return dir;
+    return *dir;
 }
 
 /// Writes the input to scratch()/name and returns its path.
