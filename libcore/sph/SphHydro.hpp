@@ -47,10 +47,9 @@
 // - rho D_thth, the pairwise rate the compatible energy equation pays pressure work for.
 // The corrected, volume-weighted divergence weighs an expanded neighbour by the void it
 // spans (V_j = A_j / rho_j) and, with few neighbours on one side, turns their sliding into
-// compression: debris particles then reached the density ceiling at 1-5 MJ/kg (250-580
-// GPa, kept once isolated) and others fell to -3 MJ/kg (tests/verification/
-// StrayStates_test.cpp). A gas keeps the corrected rate everywhere: the Noh problem's
-// sixteenfold shock needs it at its front (13.1 instead of 16 with the pairwise rate).
+// compression the energy equation never pays for (tests/verification/StrayStates_test.cpp;
+// measurements in docs/notebook/stray-states.md). A gas keeps the corrected rate
+// everywhere: the Noh problem's sixteenfold shock needs it at its front.
 // Tensile instability (particles in tension clump and the material tears too early):
 // Monaghan's artificial stress (Monaghan 2000, JCP 159:290; Gray, Monaghan & Swift 2001,
 // CMAME 190:6641, eqs. 23-27 for elastic solids). Each particle carries R_i, the tensile part

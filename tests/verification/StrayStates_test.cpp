@@ -14,15 +14,12 @@
 //     temperature) has e = 0, and neither an isentropic release nor a shock brings a solid
 //     below it; 0.01 MJ/kg is 0.2 % of the shocked state's u_p^2 / 2 (5.6 MJ/kg), room for
 //     the time integration's error on a release.
-// On the build before the fix, particles of the debris and of eroded foam elements reached
-// the density ceiling (2.25 rho0 = 6.08 g/cm^3) at 1-5 MJ/kg, so 250-580 GPa, and kept it
-// to the end of the run, and internal energies fell to -0.85 MJ/kg here (-3 MJ/kg by 30 us):
-// the continuity equation compressed them far beyond what the compatible energy equation
-// paid for (sph/SphHydro.hpp, Continuity).
-// The largest pressure is printed, not bounded: a few particles that started next to the
-// axis are heated beyond the projectile's kinetic energy per unit mass (up to 48 MJ/kg) and,
-// expanded to half the solid density, reach some 200 GPa through the Mie-Grueneisen thermal
-// term (open, docs/notebook/axis.md).
+// The build before the density-contrast rule (sph/SphHydro.hpp, Continuity) failed both:
+// its continuity equation compressed debris particles to the density ceiling, cold, and
+// took others below zero energy (docs/notebook/stray-states.md).
+// The largest pressure is printed, not bounded: a few particles next to the axis are heated
+// beyond the projectile's kinetic energy per unit mass and, at half the solid density, the
+// Mie-Grueneisen thermal term gives them far more than P_H (open, the same notebook page).
 #include "SceneRun.hpp"
 #include "TestPaths.hpp"
 #include "io/JsonInput.hpp"
