@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the toolkit builds against, only those missing.
 # Idempotent: a second run installs nothing and takes about a second. Needs root (or sudo).
+#   install-deps.sh              the build (the README's first command)
+#   install-deps.sh --paraview   also ParaView, h5py and a virtual X server for the test that
+#                                opens a run in ParaView (scripts/test.sh; about 185 packages,
+#                                2-3 minutes on a fresh machine)
 set -euo pipefail
 
 packages=(
@@ -10,6 +14,12 @@ packages=(
   libgtest-dev libgmock-dev
   clang libclang-rt-14-dev libomp-dev # the sanitizer and fuzz build (scripts/build-sanitize.sh)
 )
+if [ "${1:-}" = "--paraview" ]; then
+  packages+=(paraview python3-paraview python3-h5py xvfb xauth)
+elif [ $# -gt 0 ]; then
+  echo "install-deps: unknown option $1 (only --paraview)" >&2
+  exit 2
+fi
 
 missing=()
 for p in "${packages[@]}"; do

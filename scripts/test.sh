@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# The README's test command: installs what is missing, builds, runs the whole suite (CTest),
-# then the reduced sanitizer and fuzz jobs.
+# The README's test command: installs what is missing (ParaView too, for the test that opens a
+# run in it), builds, runs the whole suite (CTest), then the reduced sanitizer and fuzz jobs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh --paraview
 bash scripts/build.sh
+# The ParaView test registers itself only where ParaView is installed: here it must run.
+ctest --test-dir build -N -L paraview | grep -q "paraview.RunXdmf" ||
+  { echo "test.sh: the ParaView test is not registered (pvpython or xvfb-run missing)" >&2; exit 1; }
 ctest --test-dir build --output-on-failure -j "$(nproc 2>/dev/null || echo 2)"
 # The reduced sanitizer and fuzz jobs (docs/reliability.md): the unit tests and the CLI tests
 # of hostile input under AddressSanitizer and UBSan, then each fuzz target for 45 s.

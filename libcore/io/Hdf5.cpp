@@ -93,6 +93,8 @@ hid_t fileTypeOf(ElementType type) {
         return H5T_STD_U8LE;
     case ElementType::Int64:
         return H5T_STD_I64LE;
+    case ElementType::Float32:
+        return H5T_IEEE_F32LE;
     }
     return H5T_IEEE_F64LE;
 }
@@ -107,6 +109,8 @@ hid_t memTypeOf(ElementType type) {
         return H5T_NATIVE_UINT8;
     case ElementType::Int64:
         return H5T_NATIVE_INT64;
+    case ElementType::Float32:
+        return H5T_NATIVE_FLOAT;
     }
     return H5T_NATIVE_DOUBLE;
 }

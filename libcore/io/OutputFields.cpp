@@ -14,6 +14,8 @@ std::string_view toString(ElementType type) {
         return "uint8";
     case ElementType::Int64:
         return "int64";
+    case ElementType::Float32:
+        return "float32";
     }
     return "?";
 }

@@ -39,8 +39,9 @@
 
 namespace hvi::io {
 
-/// Element type of a dataset (HDF5 file types: IEEE F64LE, STD I32LE, STD U8LE, STD I64LE).
-enum class ElementType { Float64, Int32, UInt8, Int64 };
+/// Element type of a dataset (HDF5 file types: IEEE F64LE, STD I32LE, STD U8LE, STD I64LE,
+/// IEEE F32LE). Float32 only in the run file's view for ParaView (RunFileView.hpp).
+enum class ElementType { Float64, Int32, UInt8, Int64, Float32 };
 
 std::string_view toString(ElementType type);
 
@@ -48,6 +49,8 @@ template <class T>
 constexpr ElementType elementTypeOf() {
     if constexpr (std::is_same_v<T, double>) {
         return ElementType::Float64;
+    } else if constexpr (std::is_same_v<T, float>) {
+        return ElementType::Float32;
     } else if constexpr (std::is_same_v<T, std::int32_t>) {
         return ElementType::Int32;
     } else if constexpr (std::is_same_v<T, std::uint8_t>) {

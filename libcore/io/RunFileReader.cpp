@@ -2,6 +2,7 @@
 
 #include "io/Hdf5.hpp"
 #include "io/JsonText.hpp"
+#include "io/RunFileView.hpp"
 #include "io/RunFileWriter.hpp"
 
 #include <algorithm>
@@ -83,16 +84,30 @@ struct RunFileReader::Impl {
         return out;
     }
 
-    /// Which table fields exist under `group`.
-    std::vector<std::string> presentFields(std::span<const FieldSpec> specs,
-                                           const std::string& group) const {
-        std::vector<std::string> names;
-        for (const auto& spec : specs) {
-            if (h5::pathExists(file.get(), group + "/" + std::string(spec.name))) {
-                names.emplace_back(spec.name);
+    /// What a snapshot's view block holds; empty for a file of format 1, which has no view.
+    ViewBlockLayout viewBlockLayout(const std::string& snapshot, ViewBlockKind kind) const {
+        ViewBlockLayout layout;
+        const std::string group = snapshot + "/View/" + std::string(viewBlockName(kind));
+        if (!h5::pathExists(file.get(), group)) {
+            return layout;
+        }
+        Handle handle = h5::openObject(file.get(), label, group, "a view block");
+        for (const char* name : {"PointCount", "CellCount"}) {
+            const auto value = h5::readAttribute(handle.get(), name, label, group);
+            if (!value || !value->is_number_integer() || value->get<long>() < 0) {
+                throw InputError(label, group + "/@" + name,
+                                 value ? "is " + jsonText(*value) : std::string("missing"),
+                                 "a count >= 0");
+            }
+            (std::string(name) == "PointCount" ? layout.pointCount : layout.cellCount) =
+                value->get<std::size_t>();
+        }
+        for (const auto& spec : viewArraySpecs(kind)) {
+            if (h5::pathExists(file.get(), group + "/" + std::string(spec.field.name))) {
+                layout.arrays.emplace_back(spec.field.name);
             }
         }
-        return names;
+        return layout;
     }
 };
 
@@ -315,15 +330,10 @@ std::vector<SnapshotLayout> RunFileReader::layout() const {
         snap.group = info.group;
         snap.timeUs = info.timeUs;
         snap.step = info.step;
-        snap.particleCount = info.particleCount;
-        snap.particleFields = m_impl->presentFields(particleFieldSpecs(), info.group);
         snap.hasFe = info.hasFe;
+        snap.particles = m_impl->viewBlockLayout(info.group, ViewBlockKind::Particles);
         if (info.hasFe) {
-            snap.nodeCount = info.nodeCount;
-            snap.elementCount = info.elementCount;
-            snap.nodeFields = m_impl->presentFields(nodeFieldSpecs(), info.group + "/Nodes");
-            snap.elementFields =
-                m_impl->presentFields(elementFieldSpecs(), info.group + "/Elements");
+            snap.mesh = m_impl->viewBlockLayout(info.group, ViewBlockKind::FiniteElements);
         }
         result.push_back(std::move(snap));
     }

@@ -5,6 +5,7 @@
 #include "io/AtomicOutput.hpp"
 #include "io/Hdf5.hpp"
 #include "io/JsonText.hpp"
+#include "io/RunFileView.hpp"
 #include "io/RunFileXdmf.hpp"
 
 #include <cstdio>
@@ -64,11 +65,9 @@ void checkSizes(const Fields& fields, std::size_t count, const std::string& kind
     });
 }
 
-/// Writes one dataset per present field of `fields` into `group`; returns their names.
+/// Writes one dataset per present field of `fields` into `group`.
 template <class Fields>
-std::vector<std::string> writeRecord(hid_t group, const Fields& fields, std::size_t count,
-                                     int gzipLevel) {
-    std::vector<std::string> written;
+void writeRecord(hid_t group, const Fields& fields, std::size_t count, int gzipLevel) {
     forEachField(fields, [&](const FieldSpec& spec, const auto& values) {
         if (values.empty() && spec.presence == Presence::Optional) {
             return; // the scene has no such physics
@@ -82,9 +81,43 @@ std::vector<std::string> writeRecord(hid_t group, const Fields& fields, std::siz
             h5::writeArrayDataset(group, name, h5::fileTypeOf(spec.type), h5::memTypeOf(spec.type),
                                   dims, values.data(), gzipLevel);
         writeFieldAttributes(dataset.get(), spec);
-        written.push_back(name);
     });
-    return written;
+}
+
+/// Writes a snapshot's view block (RunFileView.hpp) under `view`; returns what it holds.
+ViewBlockLayout writeViewBlock(hid_t view, const ViewBlock& block, int gzipLevel) {
+    ViewBlockLayout layout;
+    layout.pointCount = block.pointCount;
+    layout.cellCount = block.cellCount;
+    Handle group = h5::createGroup(view, std::string(viewBlockName(block.kind)));
+    h5::writeAttribute(group.get(), "PointCount", static_cast<long>(block.pointCount));
+    h5::writeAttribute(group.get(), "CellCount", static_cast<long>(block.cellCount));
+    if (block.cellCount == 0) {
+        return layout; // HDF5 takes zero-sized datasets, XDMF readers do not: none written
+    }
+    const auto write = [&](const FieldSpec& spec, std::size_t count, const void* data) {
+        std::vector<hsize_t> dims{static_cast<hsize_t>(count)};
+        if (spec.components > 1) {
+            dims.push_back(static_cast<hsize_t>(spec.components));
+        }
+        Handle dataset =
+            h5::writeArrayDataset(group.get(), std::string(spec.name), h5::fileTypeOf(spec.type),
+                                  h5::memTypeOf(spec.type), dims, data, gzipLevel);
+        writeFieldAttributes(dataset.get(), spec);
+        return dataset;
+    };
+    write(viewPointsSpec(), block.pointCount, block.points.data());
+    write(viewCellsSpec(block.kind), block.cellCount, block.cells.data());
+    for (const ViewArray& array : block.arrays) {
+        const bool cell = array.spec->centre == ViewCentre::Cell;
+        const void* data = array.spec->field.type == ElementType::Float32
+                               ? static_cast<const void*>(array.real.data())
+                               : static_cast<const void*>(array.integer.data());
+        Handle dataset = write(array.spec->field, cell ? block.cellCount : block.pointCount, data);
+        h5::writeAttribute(dataset.get(), "Center", cell ? "Cell" : "Node");
+        layout.arrays.emplace_back(array.spec->field.name);
+    }
+    return layout;
 }
 
 } // namespace
@@ -282,21 +315,22 @@ int RunFileWriter::writeSnapshot(double timeUs, long step, const ParticleFieldsV
     }
     Impl& im = *m_impl;
     SnapshotLayout snap;
-    snap.particleCount = particles.z.size();
-    checkSizes(particles, snap.particleCount, "particle");
+    const std::size_t particleCount = particles.z.size();
+    std::size_t nodeCount = 0;
+    std::size_t elementCount = 0;
+    checkSizes(particles, particleCount, "particle");
     if (fe != nullptr) {
         snap.hasFe = true;
-        snap.nodeCount = fe->nodes.z.size();
-        snap.elementCount = fe->elements.connectivity.size() / 4;
-        checkSizes(fe->nodes, snap.nodeCount, "node");
-        checkSizes(fe->elements, snap.elementCount, "element");
+        nodeCount = fe->nodes.z.size();
+        elementCount = fe->elements.connectivity.size() / 4;
+        checkSizes(fe->nodes, nodeCount, "node");
+        checkSizes(fe->elements, elementCount, "element");
         for (std::size_t i = 0; i < fe->elements.connectivity.size(); ++i) {
             const std::int32_t node = fe->elements.connectivity[i];
-            if (node < 0 || static_cast<std::size_t>(node) >= snap.nodeCount) {
+            if (node < 0 || static_cast<std::size_t>(node) >= nodeCount) {
                 throw RuntimeFailure("run file: element " + std::to_string(i / 4) +
                                      " refers to node " + std::to_string(node) +
-                                     ", but there are " + std::to_string(snap.nodeCount) +
-                                     " nodes");
+                                     ", but there are " + std::to_string(nodeCount) + " nodes");
             }
         }
     }
@@ -309,18 +343,25 @@ int RunFileWriter::writeSnapshot(double timeUs, long step, const ParticleFieldsV
     Handle group = h5::createGroup(im.file.get(), snap.group);
     h5::writeAttribute(group.get(), "Time", timeUs);
     h5::writeAttribute(group.get(), "Step", step);
-    h5::writeAttribute(group.get(), "ParticleCount", static_cast<long>(snap.particleCount));
-    snap.particleFields =
-        writeRecord(group.get(), particles, snap.particleCount, im.options.gzipLevel);
+    h5::writeAttribute(group.get(), "ParticleCount", static_cast<long>(particleCount));
+    writeRecord(group.get(), particles, particleCount, im.options.gzipLevel);
     if (fe != nullptr) {
-        h5::writeAttribute(group.get(), "NodeCount", static_cast<long>(snap.nodeCount));
-        h5::writeAttribute(group.get(), "ElementCount", static_cast<long>(snap.elementCount));
+        h5::writeAttribute(group.get(), "NodeCount", static_cast<long>(nodeCount));
+        h5::writeAttribute(group.get(), "ElementCount", static_cast<long>(elementCount));
         Handle nodes = h5::createGroup(group.get(), "Nodes");
-        snap.nodeFields = writeRecord(nodes.get(), fe->nodes, snap.nodeCount, im.options.gzipLevel);
+        writeRecord(nodes.get(), fe->nodes, nodeCount, im.options.gzipLevel);
         Handle elements = h5::createGroup(group.get(), "Elements");
-        snap.elementFields =
-            writeRecord(elements.get(), fe->elements, snap.elementCount, im.options.gzipLevel);
+        writeRecord(elements.get(), fe->elements, elementCount, im.options.gzipLevel);
     }
+    Handle view = h5::createGroup(group.get(), "View");
+    h5::writeAttribute(view.get(), "Description",
+                       "What the XDMF sidecar shows: the alive particles and elements only, "
+                       "the nodes of alive elements, every field in ParaView's shapes");
+    snap.particles = writeViewBlock(view.get(), particleView(particles), im.options.gzipLevel);
+    if (fe != nullptr) {
+        snap.mesh = writeViewBlock(view.get(), meshView(*fe), im.options.gzipLevel);
+    }
+    view.reset();
     group.reset();
     im.layout.push_back(std::move(snap));
     if (im.options.flushEachSnapshot) {

@@ -5,7 +5,7 @@
 // Layout (every dataset carries `Units`, `Description`, `CgsConversionFactor` and the
 // SWIFT-style `U_L exponent`, `U_M exponent`, `U_t exponent` attributes):
 //
-//   /                      @Format = "hvi-run", @FormatVersion = 1
+//   /                      @Format = "hvi-run", @FormatVersion = 2
 //   /scene                 scene JSON text (the resolved input the run used)
 //   /materials             materials JSON text
 //   /provenance            the provenance JSON text given to the constructor
@@ -16,6 +16,8 @@
 //       Z R Vz Vr Mass ... (one dataset per particle field of OutputFields.hpp)
 //       Nodes/Z R Vz Vr Mass                          (finite-element bodies only)
 //       Elements/Connectivity Alive ... BodyId        (finite-element bodies only)
+//       View/Particles/ View/FiniteElements/          the live material in ParaView's
+//                                                     shapes, for the sidecar (RunFileView.hpp)
 //   /snapshots/000001 ...
 //   /history/Time Dt Step KineticEnergy ...           1-D, one value per appended row
 //   /run                   @status "complete" | "partial", @stop_reason, @wall_time_s, ...
@@ -47,7 +49,7 @@
 namespace hvi::io {
 
 /// Version of the layout above; the reader refuses files from a newer version.
-inline constexpr int kRunFileFormatVersion = 1;
+inline constexpr int kRunFileFormatVersion = 2;
 
 struct RunFileWriterOptions {
     /// 0: no compression (the default: writing speed matters more than size for snapshots

@@ -1,6 +1,7 @@
 #include "io/RunFileXdmf.hpp"
 
 #include "io/OutputFields.hpp"
+#include "io/RunFileView.hpp"
 
 #include <cstdio>
 #include <sstream>
@@ -58,6 +59,8 @@ XdmfType xdmfType(ElementType type) {
         return {"UChar", 1};
     case ElementType::Int64:
         return {"Int", 8};
+    case ElementType::Float32:
+        return {"Float", 4};
     }
     return {"Float", 8};
 }
@@ -81,23 +84,6 @@ public:
                          m_file + ":" + xmlEscape(path) + "</DataItem>");
     }
 
-    void geometry(int indent, const FieldSpec& z, const FieldSpec& r, std::size_t count,
-                  const std::string& group) {
-        line(indent, "<Geometry GeometryType=\"X_Y\">");
-        dataItem(indent + 1, z, count, group + "/" + std::string(z.name));
-        dataItem(indent + 1, r, count, group + "/" + std::string(r.name));
-        line(indent, "</Geometry>");
-    }
-
-    void attribute(int indent, const FieldSpec& spec, std::size_t count, const std::string& group,
-                   const char* center) {
-        const char* kind = spec.components == 1 ? "Scalar" : "Vector";
-        line(indent, "<Attribute Name=\"" + std::string(spec.name) + "\" AttributeType=\"" + kind +
-                         "\" Center=\"" + center + "\">");
-        dataItem(indent + 1, spec, count, group + "/" + std::string(spec.name));
-        line(indent, "</Attribute>");
-    }
-
     std::string str() const { return m_out.str(); }
 
 private:
@@ -105,47 +91,53 @@ private:
     std::ostringstream m_out;
 };
 
-const FieldSpec& spec(std::span<const FieldSpec> specs, std::string_view name) {
-    const FieldSpec* found = findFieldSpec(specs, name);
-    if (found == nullptr) {
-        // Layouts are built from the same tables, so a miss is a programming error.
-        throw std::logic_error("runFileXdmf: unknown field " + std::string(name));
-    }
-    return *found;
+std::string blockGroup(const SnapshotLayout& snap, ViewBlockKind kind) {
+    return snap.group + "/View/" + std::string(viewBlockName(kind));
 }
 
-void particleGrid(XdmfText& x, const SnapshotLayout& snap) {
-    const auto specs = particleFieldSpecs();
-    const std::size_t n = snap.particleCount;
-    x.line(4, "<Grid Name=\"Particles\" GridType=\"Uniform\">");
-    x.line(5, "<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + std::to_string(n) +
-                  "\"/>");
-    x.geometry(5, spec(specs, "Z"), spec(specs, "R"), n, snap.group);
-    for (const auto& name : snap.particleFields) {
-        x.attribute(5, spec(specs, name), n, snap.group, "Node");
-    }
-    x.line(4, "</Grid>");
+/// A time at which nothing of the block is alive: one point at the origin, no cells.
+void emptyGrid(XdmfText& x) {
+    x.line(5, "<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"0\" "
+              "NodesPerElement=\"1\"/>");
+    x.line(5, "<Geometry GeometryType=\"XYZ\">");
+    x.line(6, "<DataItem Dimensions=\"1 3\" NumberType=\"Float\" Precision=\"8\" "
+              "Format=\"XML\">0 0 0</DataItem>");
+    x.line(5, "</Geometry>");
 }
 
-void feGrid(XdmfText& x, const SnapshotLayout& snap) {
-    const auto nodeSpecs = nodeFieldSpecs();
-    const auto elementSpecs = elementFieldSpecs();
-    const std::string nodes = snap.group + "/Nodes";
-    const std::string elements = snap.group + "/Elements";
-    x.line(4, "<Grid Name=\"FiniteElements\" GridType=\"Uniform\">");
-    x.line(5, "<Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" +
-                  std::to_string(snap.elementCount) + "\">");
-    x.dataItem(6, spec(elementSpecs, "Connectivity"), snap.elementCount,
-               elements + "/Connectivity");
+void blockGrid(XdmfText& x, const SnapshotLayout& snap, ViewBlockKind kind,
+               const ViewBlockLayout& block) {
+    const std::string name(viewBlockName(kind));
+    x.line(4, "<Grid Name=\"" + name + "\" GridType=\"Uniform\">");
+    x.line(5, "<Time Type=\"Single\" Value=\"" + exactNumber(snap.timeUs) + "\"/>");
+    if (block.cellCount == 0) {
+        emptyGrid(x);
+        x.line(4, "</Grid>");
+        return;
+    }
+    const std::string group = blockGroup(snap, kind);
+    const char* topology = kind == ViewBlockKind::Particles ? "Polyvertex" : "Quadrilateral";
+    x.line(5, "<Topology TopologyType=\"" + std::string(topology) + "\" NumberOfElements=\"" +
+                  std::to_string(block.cellCount) + "\" NodesPerElement=\"" +
+                  std::to_string(viewNodesPerCell(kind)) + "\">");
+    x.dataItem(6, viewCellsSpec(kind), block.cellCount, group + "/Cells");
     x.line(5, "</Topology>");
-    x.geometry(5, spec(nodeSpecs, "Z"), spec(nodeSpecs, "R"), snap.nodeCount, nodes);
-    for (const auto& name : snap.nodeFields) {
-        x.attribute(5, spec(nodeSpecs, name), snap.nodeCount, nodes, "Node");
-    }
-    for (const auto& name : snap.elementFields) {
-        if (name != "Connectivity") {
-            x.attribute(5, spec(elementSpecs, name), snap.elementCount, elements, "Cell");
+    x.line(5, "<Geometry GeometryType=\"XYZ\">");
+    x.dataItem(6, viewPointsSpec(), block.pointCount, group + "/Points");
+    x.line(5, "</Geometry>");
+    for (const auto& arrayName : block.arrays) {
+        const ViewArraySpec* spec = findViewArraySpec(kind, arrayName);
+        if (spec == nullptr) {
+            // Layouts are built from the same table, so a miss is a programming error.
+            throw std::logic_error("runFileXdmf: unknown view array " + arrayName);
         }
+        const bool cell = spec->centre == ViewCentre::Cell;
+        const char* type = spec->field.components == 1 ? "Scalar" : "Vector";
+        x.line(5, "<Attribute Name=\"" + xmlEscape(arrayName) + "\" AttributeType=\"" + type +
+                      "\" Center=\"" + (cell ? "Cell" : "Node") + "\">");
+        x.dataItem(6, spec->field, cell ? block.cellCount : block.pointCount,
+                   group + "/" + arrayName);
+        x.line(5, "</Attribute>");
     }
     x.line(4, "</Grid>");
 }
@@ -156,31 +148,31 @@ std::string runFileXdmf(const std::string& h5FileName, const std::vector<Snapsho
     XdmfText x(h5FileName);
     x.line(0, "<?xml version=\"1.0\" ?>");
     x.line(0, "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>");
-    x.line(0, "<!-- Snapshots of an hvi-run file. Geometry X_Y: X = Z (axial, along the shot "
-              "line), Y = R (radial); "
-              "lengths in mm, velocities in km/s, time in us. -->");
+    x.line(0, "<!-- Snapshots of an hvi-run file, the live material only. Geometry XYZ = (Z, R, "
+              "0): X along the shot line, Y radial; lengths in mm, velocities in km/s, "
+              "pressures in GPa, time in us. -->");
     x.line(0, "<Xdmf Version=\"2.0\">");
     x.line(1, "<Domain>");
-    x.line(2, "<Grid Name=\"Snapshots\" GridType=\"Collection\" CollectionType=\"Temporal\">");
+    bool anyParticles = false;
+    bool anyMesh = false;
     for (const auto& snap : layout) {
-        const bool particles = snap.particleCount > 0;
-        const bool fe = snap.hasFe && snap.elementCount > 0 && snap.nodeCount > 0;
-        if (!particles && !fe) {
+        anyParticles = anyParticles || snap.particles.cellCount > 0;
+        anyMesh = anyMesh || snap.hasFe;
+    }
+    for (const ViewBlockKind kind : {ViewBlockKind::Particles, ViewBlockKind::FiniteElements}) {
+        const bool particles = kind == ViewBlockKind::Particles;
+        if (!(particles ? anyParticles : anyMesh)) {
             continue;
         }
-        const std::string name = snap.group.substr(snap.group.rfind('/') + 1);
-        x.line(3, "<Grid Name=\"" + xmlEscape(name) +
-                      "\" GridType=\"Collection\" CollectionType=\"Spatial\">");
-        x.line(4, "<Time Type=\"Single\" Value=\"" + exactNumber(snap.timeUs) + "\"/>");
-        if (particles) {
-            particleGrid(x, snap);
+        x.line(2, "<Grid Name=\"" + std::string(viewBlockName(kind)) +
+                      "\" GridType=\"Collection\" CollectionType=\"Temporal\">");
+        for (const auto& snap : layout) {
+            if (particles || snap.hasFe) {
+                blockGrid(x, snap, kind, particles ? snap.particles : snap.mesh);
+            }
         }
-        if (fe) {
-            feGrid(x, snap);
-        }
-        x.line(3, "</Grid>");
+        x.line(2, "</Grid>");
     }
-    x.line(2, "</Grid>");
     x.line(1, "</Domain>");
     x.line(0, "</Xdmf>");
     return x.str();

@@ -1,22 +1,21 @@
 // The XDMF sidecar of a run file (run.h5 -> run.xmf), so ParaView and VisIt can open the
 // snapshots (after SWIFT's xmf.c; XDMF 2 syntax, heavy data referenced as
-// `run.h5:/snapshots/000000/Z`).
+// `run.h5:/snapshots/000000/View/Particles/Points`).
 //
-// Layout: one temporal collection; per snapshot a spatial collection holding
-//  - grid "Particles": Polyvertex topology, every particle dataset of the snapshot as a
-//    node-centred attribute;
-//  - grid "FiniteElements" (when the snapshot has a mesh): Quadrilateral topology from
-//    Elements/Connectivity, node datasets node-centred, element datasets cell-centred.
-// Geometry is GeometryType "X_Y" with X = Z (axial, along the shot line) and Y = R (radial),
-// so the shot travels along +X in ParaView and the symmetry axis is the X axis (the
-// convention of 2D axisymmetric hydrocodes such as AUTODYN). Lengths are in mm, time in us.
-// A grid with no items (no particles, or no elements) is left out: XDMF readers reject
-// zero-sized arrays.
+// It describes each snapshot's View/ group (RunFileView.hpp: the live material only), as one
+// temporal collection per block, so a block keeps its name at every time:
+//  - "Particles": vertex cells (Polyvertex, one point each), every field cell data;
+//  - "FiniteElements" (runs with a mesh): Quadrilateral cells, node fields point data,
+//    element fields cell data.
+// Geometry is XYZ = (Z, R, 0): the shot travels along +X and the symmetry axis is the X axis
+// (the convention of 2D axisymmetric hydrocodes such as AUTODYN). Lengths are in mm, time in
+// us. A block with nothing alive at a time is a grid of one point at the origin and no cells
+// (XDMF readers reject zero-sized arrays, and a time left out would show the previous one).
 //
-// In ParaView open it with the "XDMF Reader" (checked with ParaView 5.11's pvbatch: time
-// steps, both grids, every array with its type). ParaView 5.11's "Xdmf3 Reader S/T" crash
-// on any geometry assembled from two arrays (X_Y, or a JOIN function) -- they need one
-// (N, 2) coordinates dataset, which would duplicate Z and R in every snapshot.
+// Checked with Debian's ParaView 5.11 (tests/paraview/): the "XDMF Reader" names the blocks
+// Particles and FiniteElements; "Xdmf3 Reader T" gives the same blocks as Block0 and Block1;
+// "Xdmf3 Reader S", which pvpython's OpenDataFile picks, reads the blocks as two pieces of
+// one dataset. All three give the same time values, points, cells and arrays.
 #pragma once
 
 #include <cstddef>
@@ -25,18 +24,21 @@
 
 namespace hvi::io {
 
+/// What one block of a snapshot's view holds (RunFileView.hpp).
+struct ViewBlockLayout {
+    std::size_t pointCount = 0;
+    std::size_t cellCount = 0;
+    std::vector<std::string> arrays; ///< datasets present, viewArraySpecs order
+};
+
 /// What one snapshot group holds: enough to describe it without reading the data.
 struct SnapshotLayout {
     std::string group; ///< "/snapshots/000000"
     double timeUs = 0.0;
     long step = 0;
-    std::size_t particleCount = 0;
-    std::vector<std::string> particleFields; ///< datasets present, table order
     bool hasFe = false;
-    std::size_t nodeCount = 0;
-    std::size_t elementCount = 0;
-    std::vector<std::string> nodeFields;    ///< datasets present under group/Nodes
-    std::vector<std::string> elementFields; ///< datasets present under group/Elements
+    ViewBlockLayout particles; ///< group/View/Particles
+    ViewBlockLayout mesh;      ///< group/View/FiniteElements, when hasFe
 };
 
 /// The XDMF text for the run file named `h5FileName` (a file name relative to the XDMF file,
