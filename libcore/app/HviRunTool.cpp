@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <iostream>
 #include <omp.h>
+#include <sstream>
 #include <utility>
 
 namespace hvi::app {
@@ -324,6 +325,10 @@ void HviRunTool::execute() {
                   summary.stopReason.c_str(), summary.timeUs, summary.steps, summary.wallSeconds,
                   rates.c_str(), summary.maxEnergyError, output.c_str());
     info(line);
+    std::istringstream profile(solver::profileText(summary.profile));
+    for (std::string row; std::getline(profile, row);) {
+        info(row);
+    }
     if (const fe::FeSolid* fe = sim.finiteElements(); fe && !rectangles.empty()) {
         const auto meshPath = std::filesystem::path(output).replace_extension(".msh");
         geometry::GmshMesher::write(rectangles, meshPath);

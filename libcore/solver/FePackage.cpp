@@ -73,6 +73,7 @@ void FePackage::convertErodedElements() {
     if (eroded.empty()) {
         return;
     }
+    const Stopwatch watch;
     const std::vector<int32_t> created = m_eroded->convert(
         eroded, m_solid.elements(), m_solid.nodes(), m_points.set, m_rhoMin, m_rhoMax);
     // A new particle starts the next step from its state (its rates are zero until the next
@@ -83,6 +84,7 @@ void FePackage::convertErodedElements() {
     }
     m_points.aliveCount += created.size();
     m_points.evolving.include(created);
+    bookSection("eroded elements to particles", watch.seconds());
 }
 
 void FePackage::prepare(double /*dtGuess*/) {

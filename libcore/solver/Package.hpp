@@ -18,6 +18,7 @@
 #pragma once
 
 #include "io/Checkpoint.hpp"
+#include "solver/Profile.hpp"
 
 #include <limits>
 
@@ -47,12 +48,18 @@ public:
     virtual void save(io::CheckpointState& /*state*/) const {}
     virtual void restore(const io::CheckpointState& /*state*/) {}
 
-    /// Wall time spent in its phases so far [s] (booked by the time loop).
-    double seconds() const { return m_seconds; }
-    void book(double seconds) { m_seconds += seconds; }
+    /// Wall time spent in its phases so far [s]: the time loop books each phase, a package
+    /// the sections inside them it wants to be seen (solver/Profile.hpp).
+    double seconds() const { return m_times.total(); }
+    const PhaseTimes& times() const { return m_times; }
+    void book(Phase phase, double seconds) { m_times.book(phase, seconds); }
+    void resetTimes() { m_times = PhaseTimes{}; }
+
+protected:
+    void bookSection(std::string_view name, double seconds) { m_times.bookSection(name, seconds); }
 
 private:
-    double m_seconds = 0.0;
+    PhaseTimes m_times;
 };
 
 } // namespace hvi::solver

@@ -1,7 +1,6 @@
 #include "solver/PackageLoop.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <limits>
 
 namespace hvi::solver {
@@ -17,29 +16,44 @@ PackageLoop::Vote PackageLoop::smallestVote() const {
     return vote;
 }
 
-void PackageLoop::runPhase(void (Package::*phase)(double), double dt) {
-    using WallClock = std::chrono::steady_clock;
+void PackageLoop::runPhase(Phase which, void (Package::*phase)(double), double dt) {
     for (Package* p : m_packages) {
-        const auto t0 = WallClock::now();
+        const Stopwatch watch;
         (p->*phase)(dt);
-        p->book(std::chrono::duration<double>(WallClock::now() - t0).count());
+        p->book(which, watch.seconds());
     }
 }
 
 void PackageLoop::step(double dt) {
-    runPhase(&Package::kick, dt);
-    runPhase(&Package::constrain, dt);
-    runPhase(&Package::drift, dt);
-    runPhase(&Package::evaluate, dt);
-    runPhase(&Package::kickAgain, dt);
-    runPhase(&Package::finish, dt);
+    runPhase(Phase::Kick, &Package::kick, dt);
+    runPhase(Phase::Constrain, &Package::constrain, dt);
+    runPhase(Phase::Drift, &Package::drift, dt);
+    runPhase(Phase::Evaluate, &Package::evaluate, dt);
+    runPhase(Phase::KickAgain, &Package::kickAgain, dt);
+    runPhase(Phase::Finish, &Package::finish, dt);
 }
 
 void PackageLoop::prepare(double dtKnown, double cfl) {
     double smallest = std::numeric_limits<double>::infinity();
     for (Package* p : m_packages) {
+        const Stopwatch watch;
         p->prepare(dtKnown > 0.0 ? dtKnown : cfl * smallest);
+        p->book(Phase::Prepare, watch.seconds());
         smallest = std::min(smallest, p->stableTimeStep());
+    }
+}
+
+std::vector<std::pair<std::string, PhaseTimes>> PackageLoop::times() const {
+    std::vector<std::pair<std::string, PhaseTimes>> out;
+    for (const Package* p : m_packages) {
+        out.emplace_back(p->name(), p->times());
+    }
+    return out;
+}
+
+void PackageLoop::resetTimes() {
+    for (Package* p : m_packages) {
+        p->resetTimes();
     }
 }
 

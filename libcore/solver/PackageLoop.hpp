@@ -9,6 +9,8 @@
 #include "io/Checkpoint.hpp"
 #include "solver/Package.hpp"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace hvi::solver {
@@ -34,11 +36,15 @@ public:
     /// positive, else cfl times the smallest vote of the packages before it.
     void prepare(double dtKnown, double cfl);
 
+    /// Each package's wall time so far, by phase and section, in loop order.
+    std::vector<std::pair<std::string, PhaseTimes>> times() const;
+    void resetTimes();
+
     void save(io::CheckpointState& state) const;
     void restore(const io::CheckpointState& state);
 
 private:
-    void runPhase(void (Package::*phase)(double), double dt);
+    void runPhase(Phase which, void (Package::*phase)(double), double dt);
 
     std::vector<Package*> m_packages;
 };

@@ -259,6 +259,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
                            const std::function<void(const std::string&)>& log) {
     const scene::Scene& scene = sim.scene();
     const auto t0 = Clock::now();
+    sim.resetTimes();
     RunSummary summary;
     summary.particles = sim.particles().size();
     const auto checkpointPath = io::checkpointPathFor(options.runFile);
@@ -286,7 +287,9 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
 
     std::vector<double> deviator;
     long lastSnapshotStep = -1, lastRecordStep = -1;
+    double outputSeconds = 0.0;
     auto snapshot = [&]() {
+        const Stopwatch watch;
         if (const fe::FeSolid* fe = sim.finiteElements()) {
             const std::vector<double> erosionStrain = fe->erosionStrain();
             const io::FeFieldsView feView = feFieldsOf(*fe, erosionStrain);
@@ -297,12 +300,15 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
                                  particleFieldsOf(sim.particles(), deviator));
         }
         lastSnapshotStep = sim.step();
+        outputSeconds += watch.seconds();
     };
     auto record = [&]() {
+        const Stopwatch watch;
         const io::HistoryRow row = historyRow(sim);
         summary.maxEnergyError = std::max(summary.maxEnergyError, std::fabs(row.energyError));
         writer.appendHistory(row);
         lastRecordStep = sim.step();
+        outputSeconds += watch.seconds();
     };
     if (!summary.resumed) {
         snapshot();
@@ -319,6 +325,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
             break;
         }
         sim.advance();
+        summary.profile.steps.add(sim.lastDt(), sim.dtLimiter());
         if (sim.lastDt() < summary.minDtUs) { // the smallest step, and what set it
             summary.minDtUs = sim.lastDt();
             summary.minDtTimeUs = sim.time();
@@ -344,8 +351,10 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         }
         if (options.checkpointEverySeconds > 0 &&
             secondsSince(lastCheckpoint) >= options.checkpointEverySeconds) {
+            const Stopwatch watch;
             writer.flush();
             checkpointNow();
+            outputSeconds += watch.seconds();
             lastCheckpoint = Clock::now();
         }
     }
@@ -362,7 +371,13 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     if (lastSnapshotStep != sim.step()) {
         snapshot();
     }
+    summary.profile.packages = sim.packageTimes();
+    summary.profile.loop = {{"deletion", sim.deletionSeconds()},
+                            {"stop rules", sim.stopRuleSeconds()},
+                            {"output", outputSeconds}};
+    summary.profile.wallSeconds = secondsSince(t0);
     nlohmann::json facts = finalFacts(sim, summary, options);
+    facts["profile"] = profileJson(summary.profile);
     if (reason) {
         summary.stopReason = *reason;
         summary.complete = true;

@@ -6,6 +6,7 @@
 
 #include "io/Checkpoint.hpp"
 #include "io/RunFileWriter.hpp"
+#include "solver/Profile.hpp"
 #include "solver/Simulation.hpp"
 
 #include <atomic>
@@ -43,6 +44,8 @@ struct RunSummary {
     std::string minDtLimiter;
     std::size_t particles = 0;
     bool resumed = false;
+    /// Where the wall time went and the steps taken (since the start or the resume).
+    RunProfile profile;
 };
 
 /// Runs `sim` to a stop rule. `provenance` goes into the run file. `log` receives progress

@@ -74,12 +74,19 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
     updateProgress();
 }
 
+void Simulation::resetTimes() {
+    m_loop.resetTimes();
+    m_deletionSeconds = 0.0;
+    m_stopRuleSeconds = 0.0;
+}
+
 void Simulation::refreshRates() {
     m_loop.prepare(m_dt, m_scene.run.cfl);
 }
 
 Simulation::PackageSeconds Simulation::packageSeconds() const {
-    return {m_sph->seconds(), m_fe ? m_fe->seconds() : 0.0, m_contact ? m_contact->seconds() : 0.0};
+    return {m_sph->seconds() + m_deletionSeconds, m_fe ? m_fe->seconds() : 0.0,
+            m_contact ? m_contact->seconds() : 0.0};
 }
 
 double Simulation::nextTimeStep() {
@@ -107,9 +114,11 @@ void Simulation::advance() {
     ++m_step;
     const auto t0 = WallClock::now();
     deletePoints();
-    m_sph->book(secondsSince(t0));
+    m_deletionSeconds += secondsSince(t0);
     if (m_step % kProgressEvery == 0) {
+        const auto t1 = WallClock::now();
         updateProgress();
+        m_stopRuleSeconds += secondsSince(t1);
     }
 }
 

@@ -78,13 +78,23 @@ public:
     }
     contact::KinematicContact* contact() { return m_contact ? &m_contact->contact() : nullptr; }
     /// Wall time spent so far in each package's phases [s] (the benchmark's throughput
-    /// figures); the deletion pass counts as SPH.
+    /// figures); the deletion pass counts as SPH here.
     struct PackageSeconds {
         double sph = 0.0, fe = 0.0, contact = 0.0;
     };
     PackageSeconds packageSeconds() const;
     /// The package whose vote set the last time step ("sph", "fe", "contact").
     const std::string& dtLimiter() const { return m_dtLimiter; }
+    /// Each package's wall time so far by phase and section, in loop order (the run's
+    /// profile, solver/Profile.hpp).
+    std::vector<std::pair<std::string, PhaseTimes>> packageTimes() const { return m_loop.times(); }
+    /// Wall time of the simulation's own work between steps [s]: deleting points, and the stop
+    /// rules with the rear-wall confirmation they ask for.
+    double deletionSeconds() const { return m_deletionSeconds; }
+    double stopRuleSeconds() const { return m_stopRuleSeconds; }
+    /// Starts the wall-time accounts above afresh (a run's profile covers the run alone, not
+    /// the preparation at construction).
+    void resetTimes();
 
     Totals totals() const;
     double initialEnergy() const { return m_ledger.account().initialEnergy; }
@@ -132,6 +142,8 @@ private:
     std::unique_ptr<ContactPackage> m_contact; ///< null without FE bodies
     PackageLoop m_loop;                        ///< SPH, FE, contact
     std::string m_dtLimiter = "sph";
+    double m_deletionSeconds = 0.0;
+    double m_stopRuleSeconds = 0.0;
 
     double m_time = 0.0;
     long m_step = 0;

@@ -129,7 +129,10 @@ void SphPackage::prepare(double /*dtGuess*/) {
 
 void SphPackage::computeRates() {
     auto& ps = m_points.set;
+    const Stopwatch search;
     sph::updateNeighbourList(ps, m_searchOptions, m_neighbours);
+    bookSection("neighbour search", search.seconds());
+    const Stopwatch pairs;
     // Only particles that have evolved can hold non-zero rates: the evaluation writes the
     // rates of the active particles, and every active particle joins the evolving set.
     m_points.rates.zero(m_points.evolving.items());
@@ -137,6 +140,7 @@ void SphPackage::computeRates() {
                      m_packAll ? nullptr : &m_points.evolving.items());
     m_packAll = false;
     m_materials.addStressRates(ps, m_neighbours.active, m_points.rates);
+    bookSection("pair loops", pairs.seconds());
     m_points.evolving.include(m_neighbours.active);
 }
 

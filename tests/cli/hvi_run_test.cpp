@@ -101,6 +101,30 @@ TEST(HviRunCli, SmallSceneWritesRunFileAndSidecar) {
     const auto history = reader.readHistory();
     ASSERT_FALSE(history.energyError.empty());
     EXPECT_LT(std::fabs(history.energyError.back()), 0.01);
+
+    // The profile: where the wall time went, printed and kept. Its parts are measured inside
+    // the run, so they cannot add up to more than the run's wall time (1 ms of clock reads).
+    EXPECT_NE(r.err.find("where the "), std::string::npos) << r.err;
+    const auto stored = reader.runFacts()["profile"]; // a JSON text attribute
+    ASSERT_TRUE(stored.is_string()) << stored;
+    const auto profile = nlohmann::json::parse(stored.get<std::string>());
+    ASSERT_TRUE(profile.is_object()) << profile;
+    double parts = 0.0;
+    for (const auto& package : profile["packages"]) {
+        parts += package["total_s"].get<double>();
+    }
+    for (const auto& loop : profile["loop_s"]) {
+        parts += loop.get<double>();
+    }
+    const double wall = profile["wall_time_s"].get<double>();
+    EXPECT_GT(parts, 0.0);
+    EXPECT_LE(parts, wall + 1e-3) << profile;
+    EXPECT_TRUE(profile["packages"].contains("sph")) << profile;
+    EXPECT_GT(profile["packages"]["sph"]["sections_s"]["neighbour search"].get<double>(), 0.0);
+    EXPECT_EQ(profile["steps"], reader.runFacts()["steps"]);
+    const auto& dt = profile["dt_us"];
+    EXPECT_LE(dt["min"].get<double>(), dt["median"].get<double>());
+    EXPECT_LE(dt["median"].get<double>(), dt["max"].get<double>());
 }
 
 TEST(HviRunCli, BadScenesAreRejectedWithoutOutput) {
