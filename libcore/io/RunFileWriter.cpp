@@ -65,6 +65,19 @@ void checkSizes(const Fields& fields, std::size_t count, const std::string& kind
     });
 }
 
+/// Writes `count` items of the field `spec` describes, with its attributes.
+Handle writeField(hid_t group, const FieldSpec& spec, std::size_t count, const void* data,
+                  int gzipLevel) {
+    std::vector<hsize_t> dims{static_cast<hsize_t>(count)};
+    if (spec.components > 1) {
+        dims.push_back(static_cast<hsize_t>(spec.components));
+    }
+    Handle dataset = h5::writeArrayDataset(group, std::string(spec.name), h5::fileTypeOf(spec.type),
+                                           h5::memTypeOf(spec.type), dims, data, gzipLevel);
+    writeFieldAttributes(dataset.get(), spec);
+    return dataset;
+}
+
 /// Writes one dataset per present field of `fields` into `group`.
 template <class Fields>
 void writeRecord(hid_t group, const Fields& fields, std::size_t count, int gzipLevel) {
@@ -72,15 +85,7 @@ void writeRecord(hid_t group, const Fields& fields, std::size_t count, int gzipL
         if (values.empty() && spec.presence == Presence::Optional) {
             return; // the scene has no such physics
         }
-        std::vector<hsize_t> dims{static_cast<hsize_t>(count)};
-        if (spec.components > 1) {
-            dims.push_back(static_cast<hsize_t>(spec.components));
-        }
-        const std::string name(spec.name);
-        Handle dataset =
-            h5::writeArrayDataset(group, name, h5::fileTypeOf(spec.type), h5::memTypeOf(spec.type),
-                                  dims, values.data(), gzipLevel);
-        writeFieldAttributes(dataset.get(), spec);
+        writeField(group, spec, count, values.data(), gzipLevel);
     });
 }
 
@@ -95,25 +100,16 @@ ViewBlockLayout writeViewBlock(hid_t view, const ViewBlock& block, int gzipLevel
     if (block.cellCount == 0) {
         return layout; // HDF5 takes zero-sized datasets, XDMF readers do not: none written
     }
-    const auto write = [&](const FieldSpec& spec, std::size_t count, const void* data) {
-        std::vector<hsize_t> dims{static_cast<hsize_t>(count)};
-        if (spec.components > 1) {
-            dims.push_back(static_cast<hsize_t>(spec.components));
-        }
-        Handle dataset =
-            h5::writeArrayDataset(group.get(), std::string(spec.name), h5::fileTypeOf(spec.type),
-                                  h5::memTypeOf(spec.type), dims, data, gzipLevel);
-        writeFieldAttributes(dataset.get(), spec);
-        return dataset;
-    };
-    write(viewPointsSpec(), block.pointCount, block.points.data());
-    write(viewCellsSpec(block.kind), block.cellCount, block.cells.data());
+    writeField(group.get(), viewPointsSpec(), block.pointCount, block.points.data(), gzipLevel);
+    writeField(group.get(), viewCellsSpec(block.kind), block.cellCount, block.cells.data(),
+               gzipLevel);
     for (const ViewArray& array : block.arrays) {
         const bool cell = array.spec->centre == ViewCentre::Cell;
         const void* data = array.spec->field.type == ElementType::Float32
                                ? static_cast<const void*>(array.real.data())
                                : static_cast<const void*>(array.integer.data());
-        Handle dataset = write(array.spec->field, cell ? block.cellCount : block.pointCount, data);
+        Handle dataset = writeField(group.get(), array.spec->field,
+                                    cell ? block.cellCount : block.pointCount, data, gzipLevel);
         h5::writeAttribute(dataset.get(), "Center", cell ? "Cell" : "Node");
         layout.arrays.emplace_back(array.spec->field.name);
     }

@@ -3,7 +3,6 @@
 #include "solver/SceneAssembly.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -15,12 +14,6 @@ constexpr int kProgressEvery = 10; ///< steps between penetration checks
 /// Simulated time between two confirmations of a rear-wall perforation [us]: the assessment
 /// costs a copy of the state and a pass over it, so it is asked at most this often.
 constexpr double kRearWallCheckEveryUs = 0.5;
-
-using WallClock = std::chrono::steady_clock;
-
-double secondsSince(WallClock::time_point t0) {
-    return std::chrono::duration<double>(WallClock::now() - t0).count();
-}
 } // namespace
 
 Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibrary& library,
@@ -112,13 +105,13 @@ void Simulation::advance() {
     m_time += dt;
     m_dt = dt;
     ++m_step;
-    const auto t0 = WallClock::now();
+    const Stopwatch deletion;
     deletePoints();
-    m_deletionSeconds += secondsSince(t0);
+    m_deletionSeconds += deletion.seconds();
     if (m_step % kProgressEvery == 0) {
-        const auto t1 = WallClock::now();
+        const Stopwatch stopRules;
         updateProgress();
-        m_stopRuleSeconds += secondsSince(t1);
+        m_stopRuleSeconds += stopRules.seconds();
     }
 }
 
