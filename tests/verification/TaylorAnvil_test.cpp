@@ -16,7 +16,8 @@
 // Diagnostics (docs/notebook/spall-and-damage.md): TAYLOR_H and TAYLOR_SPH_H set the spacing,
 // TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_CLOSURE=c sets its
 // failure.compression_closure, TAYLOR_WHERE=1 lists the failed elements, TAYLOR_SPH_KERNEL
-// and TAYLOR_SPH_HFAC set the SPH kernel and h / spacing; each run prints the largest
+// and TAYLOR_SPH_HFAC set the SPH kernel and h / spacing, TAYLOR_SPH_ASTRESS its artificial
+// stress epsilon; each run prints the largest
 // principal tension of the rod and where.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
@@ -195,6 +196,9 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
     }
     if (const char* factor = std::getenv("TAYLOR_SPH_HFAC")) {
         doc["sph"]["smoothing_length_factor"] = std::atof(factor);
+    }
+    if (const char* epsilon = std::getenv("TAYLOR_SPH_ASTRESS")) {
+        doc["sph"]["artificial_stress"] = std::atof(epsilon);
     }
     const char* drop = std::getenv("TAYLOR_DROP");       // diagnostics: drop "spall" or
     const char* closure = std::getenv("TAYLOR_CLOSURE"); // "failure"; set the closure
