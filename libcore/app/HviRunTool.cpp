@@ -13,6 +13,7 @@
 #include "solver/RunLoop.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -318,11 +319,22 @@ void HviRunTool::execute() {
         std::snprintf(buf, sizeof buf, "%.3e element-steps/s", summary.elementSteps / wall);
         rates += (rates.empty() ? "" : ", ") + std::string(buf);
     }
-    char line[512];
+    std::snprintf(buf, sizeof buf, "%.1f s", summary.wallSeconds);
+    std::string wallText = buf;
+    if (summary.resumed) { // the steps and rates are this part's; the whole run took more
+        const double whole = summary.earlierWallSeconds + summary.wallSeconds;
+        if (std::isfinite(whole)) {
+            std::snprintf(buf, sizeof buf, " (%.1f s with the earlier parts)", whole);
+            wallText += buf;
+        } else {
+            wallText += " (the earlier parts' time not recorded)";
+        }
+    }
+    char line[640];
     std::snprintf(line, sizeof line,
-                  "%s at t = %.4f us after %ld steps; wall %.1f s; %s; max |energy error| "
+                  "%s at t = %.4f us after %ld steps; wall %s; %s; max |energy error| "
                   "%.2e; wrote %s",
-                  summary.stopReason.c_str(), summary.timeUs, summary.steps, summary.wallSeconds,
+                  summary.stopReason.c_str(), summary.timeUs, summary.steps, wallText.c_str(),
                   rates.c_str(), summary.maxEnergyError, output.c_str());
     info(line);
     std::istringstream profile(solver::profileText(summary.profile));

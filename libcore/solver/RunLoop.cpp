@@ -188,6 +188,8 @@ OutputSchedule resumeFrom(const std::filesystem::path& checkpointPath,
         summary.minDtLimiter = state.extra["min_dt"]["limiter"].get<std::string>();
     }
     summary.resumed = true;
+    summary.earlierWallSeconds =
+        state.extra.contains("wall_time_s") ? state.extra["wall_time_s"].get<double>() : NAN;
     // Carry the snapshots and history of the interrupted run into the new file: its run
     // file (stopped by a signal), or the temporary it left when it was killed outright.
     if (std::filesystem::exists(runFile)) {
@@ -232,7 +234,13 @@ std::string progressLine(const Simulation& sim, double wallSeconds, double start
 nlohmann::json finalFacts(const Simulation& sim, const RunSummary& summary,
                           const RunOptions& options) {
     const Totals t = sim.totals();
-    return {{"wall_time_s", summary.wallSeconds},
+    // A resumed run's wall time is the whole run's: the parts before its checkpoint and this
+    // one (null when a checkpoint of an older build did not record its part).
+    const double whole = summary.earlierWallSeconds + summary.wallSeconds;
+    auto seconds = [](double s) { return std::isfinite(s) ? nlohmann::json(s) : nlohmann::json(); };
+    return {{"wall_time_s", seconds(whole)},
+            {"earlier_wall_time_s", seconds(summary.earlierWallSeconds)},
+            {"this_wall_time_s", summary.wallSeconds},
             {"threads", options.threads},
             {"steps", sim.step()},
             {"end_time_us", sim.time()},
@@ -269,6 +277,9 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
     auto checkpointNow = [&]() {
         io::CheckpointState state = checkpointOf(sim, summary.maxEnergyError);
         state.extra["scene_fingerprint"] = fingerprint;
+        if (std::isfinite(summary.earlierWallSeconds)) {
+            state.extra["wall_time_s"] = summary.earlierWallSeconds + secondsSince(t0);
+        }
         if (std::isfinite(summary.minDtUs)) { // none before the first step
             state.extra["min_dt"] = {{"dt_us", summary.minDtUs},
                                      {"time_us", summary.minDtTimeUs},

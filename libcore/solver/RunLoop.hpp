@@ -30,8 +30,12 @@ struct RunOptions {
 
 struct RunSummary {
     std::string stopReason;
-    bool complete = false; ///< false when interrupted
-    double wallSeconds = 0.0;
+    bool complete = false;    ///< false when interrupted
+    double wallSeconds = 0.0; ///< this invocation's, from its start or resume
+    /// The wall time the run had taken up to the checkpoint it resumed from (0 for a run made
+    /// straight through; NaN when that checkpoint did not record it). Work done after that
+    /// checkpoint and lost to the interruption is not counted: it is done again here.
+    double earlierWallSeconds = 0.0;
     long steps = 0;
     double timeUs = 0.0;
     double maxEnergyError = 0.0; ///< max |energy error| over the history rows

@@ -21,6 +21,9 @@ struct Row {
     std::optional<std::string> ours, grade;
     bool final = false, axisOnly = false;
     std::optional<double> wallS, energyError, endUs;
+    /// A resumed run whose earlier parts were not timed (a checkpoint of a build before the
+    /// run facts' earlier_wall_time_s): wallS is its last part only, a lower bound.
+    bool wallPartOnly = false;
     bool complete = false;
     std::optional<std::string> ble;
     std::optional<double> bleRatio; ///< d / d_c
@@ -70,6 +73,13 @@ Row readRow(const Case& c, const fs::path& dir) {
         }
         if (member(*v, "wall_time_s").is_number()) {
             row.wallS = member(*v, "wall_time_s").get<double>();
+        }
+        const json& run = member(*v, "run");
+        if (member(run, "resumed") == true && !member(run, "earlier_wall_time_s").is_number()) {
+            row.wallPartOnly = true;
+            if (!row.wallS && member(run, "this_wall_time_s").is_number()) {
+                row.wallS = member(run, "this_wall_time_s").get<double>();
+            }
         }
         row.complete = member(*v, "complete") == true;
         if (member(*v, "solver").is_object() && member(member(*v, "solver"), "git").is_string()) {
@@ -139,7 +149,7 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
     std::map<std::string, std::pair<Tally, Tally>> byShield, bySpeed;
     std::map<std::string, int> casesOf;
     Tally oursAll, bleAll, bleOnRun;
-    int tp = 0, fp = 0, fn = 0, tn = 0, axisOnly = 0, notRun = 0, provisional = 0;
+    int tp = 0, fp = 0, fn = 0, tn = 0, axisOnly = 0, notRun = 0, provisional = 0, partOnly = 0;
     double wall = 0.0;
     std::map<std::string, int> solvers; // build -> verdicts it made
     for (const auto& r : rows) {
@@ -162,6 +172,7 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
         axisOnly += r.axisOnly ? 1 : 0;
         provisional += r.final ? 0 : 1;
         wall += r.wallS.value_or(0.0);
+        partOnly += r.wallPartOnly ? 1 : 0;
         ++solvers[r.solver.empty() ? "unknown" : r.solver];
     }
     md << "## Summary\n\n"
@@ -188,7 +199,12 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
        << "band alone: " << axisOnly
        << ". Provisional NP verdicts (run ended before rest): " << provisional
        << ". Not run: " << notRun << " of " << rows.size()
-       << ". Wall time of the runs: " << fmt("%.0f", wall) << " s.";
+       << ". Wall time of the runs: " << (partOnly > 0 ? "at least " : "") << fmt("%.0f", wall)
+       << " s"
+       << (partOnly > 0 ? " (" + std::to_string(partOnly) +
+                              " resumed runs timed by their last part only, marked ≥)"
+                        : std::string())
+       << ".";
     if (!solvers.empty()) {
         // Verdicts kept from an older solver are not a measurement of the current one.
         md << " Runs made by hvi-run build";
@@ -214,8 +230,8 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
            << (r.ours ? (r.final ? "yes" : "no") : "") << " | "
            << (r.ours && r.axisOnly ? "yes" : "") << " | " << r.ble.value_or("–") << " | "
            << (r.bleRatio ? fmt("%.2f", *r.bleRatio) : std::string("–")) << " | "
-           << (r.wallS ? fmt("%.0f", *r.wallS) : std::string("")) << " | "
-           << (r.energyError ? fmt("%.1e", *r.energyError) : std::string("")) << " | "
+           << (r.wallS ? (r.wallPartOnly ? "≥" : "") + fmt("%.0f", *r.wallS) : std::string(""))
+           << " | " << (r.energyError ? fmt("%.1e", *r.energyError) : std::string("")) << " | "
            << (r.endUs ? fmt("%.1f", *r.endUs) + (r.complete ? "" : " (partial)") : std::string(""))
            << " |\n";
     }

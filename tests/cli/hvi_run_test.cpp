@@ -271,6 +271,16 @@ TEST(HviRunCli, AStoppedAndResumedRunIsTheUninterruptedOne) {
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(resultsDiffer(uninterruptedRun(), run), "");
         EXPECT_FALSE(std::filesystem::exists(checkpoint));
+        // Its wall time is the whole run's: the part before the stop (at least the 0.3 s to
+        // the first checkpoint) and this one; a resumed run used to report its last part only.
+        const auto facts = hvi::io::RunFileReader(run.string()).runFacts();
+        EXPECT_EQ(facts["resumed"], true);
+        ASSERT_TRUE(facts["earlier_wall_time_s"].is_number()) << facts.dump();
+        EXPECT_GE(facts["earlier_wall_time_s"].get<double>(), 0.3);
+        EXPECT_DOUBLE_EQ(facts["wall_time_s"].get<double>(),
+                         facts["earlier_wall_time_s"].get<double>() +
+                             facts["this_wall_time_s"].get<double>());
+        EXPECT_NE(r.err.find(" s with the earlier parts)"), std::string::npos) << r.err;
     }
 }
 

@@ -58,3 +58,30 @@ TEST(ValidationReport, CountsAgreementPerShieldAndTheConfusionMatrix) {
               std::string::npos)
         << md;
 }
+
+// A run resumed from the checkpoint of a build that did not record the earlier parts' wall
+// time counts only its last part: the report marks that figure, and the set's sum, as a lower
+// bound. A resumed run that knows its earlier parts is a whole figure.
+TEST(ValidationReport, MarksTheWallTimeOfARunTimedByItsLastPartOnly) {
+    const auto cases = validation::selectCases("quick");
+    const fs::path out = test::tempPath("validation_report_resumed");
+    fs::remove_all(out);
+    writeCase(out / "HITF03147-2", "NP", false, 0.8);
+    writeCase(out / "HITF03147-3", "P", false, 1.3);
+    auto withRun = [&](const char* id, const nlohmann::json& run) {
+        nlohmann::json v = nlohmann::json::parse(std::ifstream(out / id / "verdict.json"));
+        v["run"] = run;
+        std::ofstream(out / id / "verdict.json") << v.dump();
+    };
+    withRun("HITF03147-2", {{"resumed", true}, {"wall_time_s", 10.0}}); // an older build
+    withRun("HITF03147-3",
+            {{"resumed", true}, {"earlier_wall_time_s", 6.0}, {"this_wall_time_s", 4.0}});
+    const std::string md = validation::validationReport(cases, out, {"quick", "0.04"});
+    EXPECT_NE(md.find("| HITF03147-2 | foam | 1.1 | 6.69 | NP | NP |"), std::string::npos) << md;
+    EXPECT_NE(md.find(" | ≥10 | "), std::string::npos) << md;
+    EXPECT_EQ(md.find(" | ≥10 | ", md.find(" | ≥10 | ") + 1), std::string::npos) << md;
+    EXPECT_NE(md.find("Wall time of the runs: at least 20 s (1 resumed runs timed by their last "
+                      "part only, marked ≥)."),
+              std::string::npos)
+        << md;
+}
