@@ -17,8 +17,7 @@
 // TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_CLOSURE=c sets its
 // failure.compression_closure, TAYLOR_WHERE=1 lists the failed elements, TAYLOR_SPH_KERNEL
 // and TAYLOR_SPH_HFAC set the SPH kernel and h / spacing, TAYLOR_SPH_ASTRESS its artificial
-// stress epsilon; each run prints the largest
-// principal tension of the rod and where.
+// stress epsilon; each run prints the largest principal tension of the rod and where.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "material/MaterialLibrary.hpp"
