@@ -322,7 +322,7 @@ void HviRunTool::execute() {
     std::snprintf(buf, sizeof buf, "%.1f s", summary.wallSeconds);
     std::string wallText = buf;
     if (summary.resumed) { // the steps and rates are this part's; the whole run took more
-        const double whole = summary.earlierWallSeconds + summary.wallSeconds;
+        const double whole = summary.wholeWallSeconds();
         if (std::isfinite(whole)) {
             std::snprintf(buf, sizeof buf, " (%.1f s with the earlier parts)", whole);
             wallText += buf;

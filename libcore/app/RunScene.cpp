@@ -47,7 +47,7 @@ RunScene loadRunScene(const std::string& file, const SceneOverrides& overrides,
     io::validateAgainstSchema(doc, "scene", file);
     auto library = scene::sceneLibrary(doc.value("materials", json::object()), file);
     if (!overrides.materialsFile.empty()) {
-        library.merge(material::MaterialLibrary::fromFile(overrides.materialsFile));
+        library.merge(material::MaterialLibrary::fromFile(overrides.materialsFile, &library));
     }
     scene::Scene parsed = scene::parseScene(doc, file, library.names());
     scene::requirePointBudget(parsed, file, memoryLimitBytes);

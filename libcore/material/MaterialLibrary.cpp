@@ -213,6 +213,33 @@ std::string modelType(Section& s, const std::vector<std::string>& accepted) {
     return type;
 }
 
+/// Tillotson's incipient and complete vaporisation energies [MJ/kg], E_cv > E_iv.
+void readVaporEnergies(Section& s, double& incipient, double& complete) {
+    incipient =
+        s.number("E_iv_MJ_kg", "incipient vaporisation energy E_iv [MJ/kg], > 0", above(0.0));
+    complete =
+        s.number("E_cv_MJ_kg", "complete vaporisation energy E_cv [MJ/kg], > E_iv", above(0.0));
+    if (complete <= incipient) {
+        s.issue(s.pointerTo("E_cv_MJ_kg"),
+                "must exceed E_iv_MJ_kg (" + formatNumber(incipient) + "), got " +
+                    formatNumber(complete),
+                "complete vaporisation energy E_cv [MJ/kg], > E_iv");
+    }
+}
+
+/// Tillotson's expanded-branch constants of a Mie-Grueneisen EOS (MieGruneisen.hpp).
+TillotsonExpansion readExpansion(Section& s) {
+    s.text("source", kSourceWhat);
+    TillotsonExpansion x;
+    x.gasGamma =
+        s.number("a", "Tillotson a (Grueneisen parameter of the gas) [-], > 0", above(0.0));
+    x.alpha = s.number("alpha", "Tillotson alpha [-], >= 0", atLeast(0.0));
+    x.beta = s.number("beta", "Tillotson beta [-], >= 0", atLeast(0.0));
+    readVaporEnergies(s, x.incipientVaporEnergy, x.completeVaporEnergy);
+    s.rejectUnknownKeys();
+    return x;
+}
+
 std::optional<EquationOfState> readEos(Section& s, double& referenceDensity) {
     const std::string type = modelType(s, {"mie_gruneisen", "tillotson", "ideal_gas"});
     if (type.empty()) {
@@ -230,6 +257,8 @@ std::optional<EquationOfState> readEos(Section& s, double& referenceDensity) {
         m.gruneisenGamma = s.number("gamma0", "Grueneisen gamma0 [-], >= 0", atLeast(0.0));
         m.volumeCorrection =
             s.number("b", "first-order volume correction b [-] (default 0)", {}, 0.0);
+        s.readSection("expansion", "Tillotson expanded-state constants object (optional)",
+                      [&](Section& x) { m.expansion = readExpansion(x); });
         eos = m;
     } else if (type == "tillotson") {
         Tillotson t;
@@ -237,20 +266,11 @@ std::optional<EquationOfState> readEos(Section& s, double& referenceDensity) {
         t.bulkModulusA = s.number("A_GPa", "Tillotson A [GPa], > 0", above(0.0));
         t.nonlinearModulusB = s.number("B_GPa", "Tillotson B [GPa], >= 0", atLeast(0.0));
         t.referenceEnergy = s.number("E0_MJ_kg", "Tillotson E0 [MJ/kg], > 0", above(0.0));
-        t.incipientVaporEnergy =
-            s.number("E_iv_MJ_kg", "incipient vaporisation energy E_iv [MJ/kg], > 0", above(0.0));
-        t.completeVaporEnergy =
-            s.number("E_cv_MJ_kg", "complete vaporisation energy E_cv [MJ/kg], > E_iv", above(0.0));
+        readVaporEnergies(s, t.incipientVaporEnergy, t.completeVaporEnergy);
         t.smallA = s.number("a", "Tillotson a [-], >= 0", atLeast(0.0));
         t.smallB = s.number("b", "Tillotson b [-], >= 0", atLeast(0.0));
         t.alpha = s.number("alpha", "Tillotson alpha [-], >= 0", atLeast(0.0));
         t.beta = s.number("beta", "Tillotson beta [-], >= 0", atLeast(0.0));
-        if (t.completeVaporEnergy <= t.incipientVaporEnergy) {
-            s.issue(s.pointerTo("E_cv_MJ_kg"),
-                    "must exceed E_iv_MJ_kg (" + formatNumber(t.incipientVaporEnergy) + "), got " +
-                        formatNumber(t.completeVaporEnergy),
-                    "complete vaporisation energy E_cv [MJ/kg], > E_iv");
-        }
         eos = t;
     } else {
         IdealGas g;
@@ -462,7 +482,48 @@ const MaterialLibrary& MaterialLibrary::builtin() {
     return library;
 }
 
-MaterialLibrary MaterialLibrary::fromJson(const json& document, const std::string& label) {
+namespace {
+
+/// The "patches" of a user library: each a JSON merge patch (RFC 7386) of the material of
+/// that name in `base`, read as a whole material once applied.
+void readPatches(const json& patches, const MaterialLibrary* base, const std::string& label,
+                 std::vector<InputIssue>& issues, std::map<std::string, MaterialSpec>& out) {
+    const std::string what =
+        "object mapping names of built-in materials to JSON merge patches (RFC 7386) of them";
+    if (!patches.is_object() || patches.empty()) {
+        issues.push_back({label, "/patches",
+                          patches.is_object()
+                              ? std::string("must patch at least one material")
+                              : std::string("must be an object, got ") + patches.type_name(),
+                          what});
+        return;
+    }
+    for (auto it = patches.begin(); it != patches.end(); ++it) {
+        const std::string pointer = "/patches/" + pointerToken(it.key());
+        if (base == nullptr || !base->contains(it.key())) {
+            issues.push_back({label, pointer, "no material '" + it.key() + "' to patch",
+                              base ? "one of: " + joined(base->names())
+                                   : std::string("a library laid over the built-in one")});
+            continue;
+        }
+        if (!it.value().is_object()) {
+            issues.push_back({label, pointer,
+                              std::string("must be an object, got ") + it.value().type_name(),
+                              what});
+            continue;
+        }
+        json entry = json::parse(base->get(it.key()).definitionJson);
+        entry.merge_patch(it.value());
+        MaterialSpec spec;
+        readMaterial(entry, it.key(), pointer, label, issues, spec);
+        out.insert_or_assign(it.key(), std::move(spec));
+    }
+}
+
+} // namespace
+
+MaterialLibrary MaterialLibrary::fromJson(const json& document, const std::string& label,
+                                          const MaterialLibrary* base) {
     std::vector<InputIssue> issues;
     MaterialLibrary library;
     library.m_label = label;
@@ -475,9 +536,15 @@ MaterialLibrary MaterialLibrary::fromJson(const json& document, const std::strin
                       std::string("must be a string, got ") + description->type_name(),
                       "description of the library");
         }
+        const json* patches = top.child("patches");
+        if (patches != nullptr) {
+            readPatches(*patches, base, label, issues, library.m_materials);
+        }
         const json* materials = top.child("materials");
         if (materials == nullptr) {
-            top.issue("/materials", "missing", "object mapping material names to definitions");
+            if (patches == nullptr) {
+                top.issue("/materials", "missing", "object mapping material names to definitions");
+            }
         } else if (!materials->is_object() || materials->empty()) {
             top.issue("/materials",
                       materials->is_object()
@@ -500,9 +567,9 @@ MaterialLibrary MaterialLibrary::fromJson(const json& document, const std::strin
     return library;
 }
 
-MaterialLibrary MaterialLibrary::fromFile(const std::string& path) {
+MaterialLibrary MaterialLibrary::fromFile(const std::string& path, const MaterialLibrary* base) {
     // The shared reader: one linear pre-scan (nesting, non-finite numbers) before parsing.
-    return fromJson(io::readJsonFile(path), path);
+    return fromJson(io::readJsonFile(path), path, base);
 }
 
 const MaterialSpec& MaterialLibrary::get(const std::string& name) const {

@@ -22,9 +22,14 @@
 //                       "reference_strain_rate_per_s" (default 1), "source" }  optional,
 //                                                                   needs strength
 //   } } }
-// EOS keys: mie_gruneisen: reference_density_g_cm3, c0_km_s, s, gamma0, b (default 0);
+// EOS keys: mie_gruneisen: reference_density_g_cm3, c0_km_s, s, gamma0, b (default 0),
+// expansion (optional: a, alpha, beta, E_iv_MJ_kg, E_cv_MJ_kg, source; MieGruneisen.hpp);
 // tillotson: reference_density_g_cm3, A_GPa, B_GPa, E0_MJ_kg, E_iv_MJ_kg, E_cv_MJ_kg, a, b,
 // alpha, beta; ideal_gas: gamma, reference_density_g_cm3.
+// A user library may instead (or as well) give "patches": { "<name>": {...} }, each a JSON
+// merge patch (RFC 7386) of the material of that name in the library it is laid over: the
+// blocks and keys it gives replace the base's, null removes one, the rest is kept. So a
+// sensitivity study changes one constant without copying the material.
 // Every block needs a non-empty "source" citing its values. Unknown keys, missing keys, wrong
 // types and non-physical values are all reported together in one hvi::InputError, each
 // located by JSON pointer (e.g. "/materials/Al6061-T6/eos/c0_km_s: must be > 0, got -1").
@@ -46,12 +51,14 @@ public:
 
     /// A library from a parsed document with the schema above. `label` names the source in
     /// error messages (a file name, or e.g. "<builtin>"). Throws hvi::InputError listing every
-    /// problem found.
-    static MaterialLibrary fromJson(const nlohmann::json& document, const std::string& label);
+    /// problem found. `base` is the library the result will be laid over, which its
+    /// "patches" change (none allowed without it).
+    static MaterialLibrary fromJson(const nlohmann::json& document, const std::string& label,
+                                    const MaterialLibrary* base = nullptr);
 
     /// A library from a JSON file; throws hvi::InputError if it cannot be read or parsed, or
     /// fails the checks of fromJson.
-    static MaterialLibrary fromFile(const std::string& path);
+    static MaterialLibrary fromFile(const std::string& path, const MaterialLibrary* base = nullptr);
 
     /// The material called `name`; throws hvi::InputError naming it and listing the known
     /// names when there is none.

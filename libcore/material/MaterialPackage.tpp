@@ -33,17 +33,25 @@ void pressureOf(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdi
         if (!ps.alive[i]) {
             return;
         }
-        const double rho = std::max(ps.rho[i], body.minDensity);
+        // Below the cut-off density a point is fragmented: it carries no tension. Where the
+        // EOS describes hot expanded states their pressure stays (it falls to zero with the
+        // density, so nothing jumps at the cut-off); otherwise the point carries no stress and
+        // keeps the sound speed of the cut-off density.
+        const bool expanded = ps.rho[i] < body.minDensity;
+        const bool keepsGasPressure = eos.describesExpandedStates();
+        const double rho = keepsGasPressure ? ps.rho[i] : std::max(ps.rho[i], body.minDensity);
         const material::EosState st = eos.evaluate(rho, ps.e[i]);
         double p = st.pressure;
         double c2 = st.soundSpeedSquared;
         const bool failed = hasS && ps.damage[i] >= 1.0;
-        if (ps.rho[i] < body.minDensity) {
-            p = 0.0; // an expanded, fragmented point carries no stress
+        if (expanded) {
+            p = keepsGasPressure ? std::max(p, 0.0) : 0.0;
         } else if (failed && p < 0.0) {
             p = 0.0; // failed material takes no tension
         }
-        if (shear > 0.0 && !failed) {
+        // A point below the cut-off carries no deviator (applyPlasticity): with a gas
+        // pressure its waves are the gas's alone.
+        if (shear > 0.0 && !failed && !(expanded && keepsGasPressure)) {
             c2 += (4.0 / 3.0) * shear / rho;
         }
         ps.p[i] = p;
@@ -59,7 +67,7 @@ void MaterialPackage::updatePressure(Points& ps) const {
         std::visit(
             [&](const auto& eos) {
                 detail::pressureOf(ps, body, eos, static_cast<std::ptrdiff_t>(body.first),
-                           static_cast<std::ptrdiff_t>(body.first + body.count), nullptr);
+                                   static_cast<std::ptrdiff_t>(body.first + body.count), nullptr);
             },
             body.spec->eos);
     }
@@ -78,7 +86,8 @@ void MaterialPackage::updatePressure(Points& ps, std::span<const int32_t> items)
             std::lower_bound(lo, items.end(), static_cast<int32_t>(body.first + body.count));
         std::visit(
             [&](const auto& eos) {
-                detail::pressureOf(ps, body, eos, lo - items.begin(), hi - items.begin(), items.data());
+                detail::pressureOf(ps, body, eos, lo - items.begin(), hi - items.begin(),
+                                   items.data());
             },
             body.spec->eos);
     }

@@ -234,11 +234,10 @@ std::string progressLine(const Simulation& sim, double wallSeconds, double start
 nlohmann::json finalFacts(const Simulation& sim, const RunSummary& summary,
                           const RunOptions& options) {
     const Totals t = sim.totals();
-    // A resumed run's wall time is the whole run's: the parts before its checkpoint and this
-    // one (null when a checkpoint of an older build did not record its part).
-    const double whole = summary.earlierWallSeconds + summary.wallSeconds;
+    // A resumed run's wall time is the whole run's (null when a checkpoint of an older build
+    // did not record its part).
     auto seconds = [](double s) { return std::isfinite(s) ? nlohmann::json(s) : nlohmann::json(); };
-    return {{"wall_time_s", seconds(whole)},
+    return {{"wall_time_s", seconds(summary.wholeWallSeconds())},
             {"earlier_wall_time_s", seconds(summary.earlierWallSeconds)},
             {"this_wall_time_s", summary.wallSeconds},
             {"threads", options.threads},

@@ -36,6 +36,8 @@ struct RunSummary {
     /// straight through; NaN when that checkpoint did not record it). Work done after that
     /// checkpoint and lost to the interruption is not counted: it is done again here.
     double earlierWallSeconds = 0.0;
+    /// The whole run's wall time: the earlier parts' and this one (NaN when not recorded).
+    double wholeWallSeconds() const { return earlierWallSeconds + wallSeconds; }
     long steps = 0;
     double timeUs = 0.0;
     double maxEnergyError = 0.0; ///< max |energy error| over the history rows

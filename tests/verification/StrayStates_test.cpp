@@ -91,32 +91,75 @@ void record(Worst& w, const sph::ParticleSet& ps, double t) {
     }
 }
 
-} // namespace
+struct Outcome {
+    Worst worst;
+    double endUs = 0.0, energyError = 0.0;
+};
 
-TEST(StrayStates, NoParticleDenserThanTheImpactCanMakeOrBelowTheReferenceEnergy) {
+/// The default case to kEndUs; the worst states from kCheckFromUs on. `expandedStates` lays
+/// the repository's expanded-states overlay over the library.
+Outcome runDefaultCase(bool expandedStates) {
     auto doc = io::readJsonFile(test::dataPath("stray/hitf03147-2-0.08mm.json").string());
     doc["run"]["end_time_us"] = kEndUs;
     const auto scene = test::makeScene(doc);
-    solver::Simulation sim(scene, scene::sceneLibrary(doc["materials"], "<test>"));
-    const double hugoniot = symmetricHugoniotPressureGPa(6.69);
-    const double densest = coldDensityAt(hugoniot);
-    Worst worst;
+    auto library = scene::sceneLibrary(doc["materials"], "<test>");
+    if (expandedStates) {
+        library.merge(material::MaterialLibrary::fromFile(
+            test::sourcePath("workflows/materials/expanded-states.json").string(), &library));
+    }
+    solver::Simulation sim(scene, library);
+    Outcome out;
     test::runUntil(sim, kEndUs, [&](const solver::Simulation& s) {
         if (s.time() >= kCheckFromUs) {
-            record(worst, s.particles(), s.time());
+            record(out.worst, s.particles(), s.time());
         }
     });
+    out.endUs = sim.time();
+    out.energyError = sim.energyError();
+    return out;
+}
+
+} // namespace
+
+TEST(StrayStates, NoParticleDenserThanTheImpactCanMakeOrBelowTheReferenceEnergy) {
+    const Outcome run = runDefaultCase(false);
+    const Worst& worst = run.worst;
+    const double hugoniot = symmetricHugoniotPressureGPa(6.69);
+    const double densest = coldDensityAt(hugoniot);
     std::printf("from %.1f to %.2f us: largest pressure %.1f GPa (particle %zu, %.3f g/cm3, "
                 "t = %.2f us; the impact's Hugoniot %.1f GPa), lowest internal energy %.4f MJ/kg "
                 "(particle %zu, "
                 "t = %.2f us), energy error %.2e\n",
-                kCheckFromUs, sim.time(), worst.pressure, worst.pressureParticle,
+                kCheckFromUs, run.endUs, worst.pressure, worst.pressureParticle,
                 worst.pressureDensity, worst.pressureTime, hugoniot, worst.energy,
-                worst.energyParticle, worst.energyTime, sim.energyError());
+                worst.energyParticle, worst.energyTime, run.energyError);
     std::printf("largest density %.3f g/cm3 (particle %zu, t = %.2f us; bound %.3f g/cm3)\n",
                 worst.density, worst.densityParticle, worst.densityTime, densest);
     EXPECT_NEAR(hugoniot, 89.7, 0.05); // the header's figures
     EXPECT_NEAR(densest, 4.47, 0.005);
     EXPECT_LE(worst.density, densest);
+    EXPECT_GE(worst.energy, kLowestEnergyMJkg);
+}
+
+// With the expanded-states overlay (Tillotson's expanded branch on the aluminium EOS,
+// workflows/materials/expanded-states.json) the hot debris stopped on the first foam layer
+// keeps a gas pressure that falls with its density instead of the solid's thermal pressure
+// Gamma0 rho0 e (about 230 GPa at half density and 50 MJ/kg), so after the impact no particle
+// carries more than the impact's own Hugoniot pressure: debris that has released from that
+// state and strikes the layers at no more than the projectile's speed cannot be shocked
+// beyond it. Without the overlay the largest is 206 GPa (the test above prints it). The
+// density and energy bounds of the test above hold as well.
+TEST(StrayStates, WithExpandedStatesNoParticleAboveTheImpactsHugoniotPressure) {
+    const Outcome run = runDefaultCase(true);
+    const Worst& worst = run.worst;
+    const double hugoniot = symmetricHugoniotPressureGPa(6.69);
+    std::printf("expanded states, from %.1f to %.2f us: largest pressure %.1f GPa (particle %zu, "
+                "%.3f g/cm3, t = %.2f us), largest density %.3f g/cm3, lowest internal energy "
+                "%.4f MJ/kg, energy error %.2e\n",
+                kCheckFromUs, run.endUs, worst.pressure, worst.pressureParticle,
+                worst.pressureDensity, worst.pressureTime, worst.density, worst.energy,
+                run.energyError);
+    EXPECT_LE(worst.pressure, hugoniot);
+    EXPECT_LE(worst.density, coldDensityAt(hugoniot));
     EXPECT_GE(worst.energy, kLowestEnergyMJkg);
 }

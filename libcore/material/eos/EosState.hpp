@@ -22,6 +22,38 @@ struct EosState {
     double soundSpeedSquared = 0.0;
 };
 
+/// One analytic form of an EOS at a point: P and its partial derivatives, from which the
+/// isentropic sound speed follows.
+struct EosBranch {
+    double p;      ///< [GPa]
+    double dPdRho; ///< at constant e [(km/s)^2]
+    double dPdE;   ///< at constant rho [g/cm^3]
+
+    /// The state, with c^2 = (dP/drho)_e + (P / rho^2) (dP/de)_rho floored at `floor2`
+    /// (a NaN c^2 fails the comparison and stays NaN: bad input is not hidden).
+    EosState state(double rho, double floor2) const noexcept {
+        const double c2 = dPdRho + p * dPdE / (rho * rho);
+        return {p, c2 < floor2 ? floor2 : c2};
+    }
+};
+
+/// Tillotson's rule between the incipient and complete vaporisation energies (GA-3216, 1962):
+/// for e in (E_iv, E_cv), P linear in e between the `solid` and `expanded` forms, so P is
+/// continuous in e; outside, the one form or the other.
+inline EosBranch vaporisationBlend(const EosBranch& solid, const EosBranch& expanded, double e,
+                                   double incipient, double complete) noexcept {
+    if (e <= incipient) {
+        return solid;
+    }
+    if (e >= complete) {
+        return expanded;
+    }
+    const double width = complete - incipient;
+    const double w = (e - incipient) / width;
+    return {w * expanded.p + (1.0 - w) * solid.p, w * expanded.dPdRho + (1.0 - w) * solid.dPdRho,
+            w * expanded.dPdE + (1.0 - w) * solid.dPdE + (expanded.p - solid.p) / width};
+}
+
 /// Evaluates `eos.evaluate(rho, e)` for every point: density [g/cm^3] and specific internal
 /// energy [MJ/kg] in, pressure [GPa] and c^2 [(km/s)^2] out. All spans must have one length;
 /// throws std::invalid_argument otherwise (checked once per call, not per point).

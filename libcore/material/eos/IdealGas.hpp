@@ -21,6 +21,9 @@ struct IdealGas {
 
     double gamma = 5.0 / 3.0; ///< ratio of specific heats [-], > 1
 
+    /// A gas is an expanded state: the solver's density cut-off takes no pressure from it.
+    static constexpr bool describesExpandedStates() noexcept { return true; }
+
     EosState evaluate(double rho, double e) const noexcept {
         const double p = (gamma - 1.0) * rho * e;
         const double c2 = gamma * (gamma - 1.0) * e;

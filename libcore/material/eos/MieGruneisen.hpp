@@ -19,6 +19,20 @@
 // The same rho Gamma is used in expansion so that dP/de is continuous through mu = 0; with
 // b = 0 (the Al 6061-T6 default) the expansion branch is P = rho0 c0^2 mu + Gamma0 rho0 e.
 //
+// Hot expanded states (optional, `expansion`). Below rho0 the form above keeps the thermal
+// pressure at Gamma0 rho0 e whatever the density, so hot debris expanded to half its density
+// still has the pressure of hot solid (about 230 GPa at 50 MJ/kg for aluminium) and a sound
+// speed near 27 km/s. With `expansion` given, states with rho < rho0 and e above the
+// incipient-vaporisation energy E_iv follow Tillotson's expanded branch instead (Tillotson,
+// GA-3216, 1962; form as in Melosh, Impact Cratering, 1989, App. II), written on this EOS's
+// own cold and thermal terms, with x = rho0/rho - 1:
+//     P_e = a rho e + [(rho Gamma - a rho) e + f(mu) exp(-beta x)] exp(-alpha x^2)
+// where f(mu) = rho0 c0^2 mu is the cold term above and rho Gamma = rho0 (Gamma0 + b mu). So
+// P_e = P at rho0, and far from it the material tends to a gas of Grueneisen parameter a
+// (P = a rho e, zero at zero density). Between E_iv and the complete-vaporisation energy E_cv
+// P is linear in e between the two forms, as in Tillotson's EOS (P continuous in rho and e).
+// a, alpha, beta, E_iv and E_cv are Tillotson's published constants of the metal.
+//
 // Sound speed: c^2 = (dP/drho)_e + (P / rho^2) (dP/de)_rho, the isentropic derivative.
 //
 // Guards (both documented limits of the model, not physics):
@@ -42,9 +56,20 @@
 #include "material/eos/EosState.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 
 namespace hvi::material {
+
+/// Tillotson's expanded-branch constants for MieGruneisen (see the file comment).
+struct TillotsonExpansion {
+    double gasGamma = 0.0;             ///< a: the Grueneisen parameter at zero density [-]
+    double alpha = 0.0;                ///< decay of the solid's thermal and cold terms [-]
+    double beta = 0.0;                 ///< further decay of the cold term [-]
+    double incipientVaporEnergy = 0.0; ///< E_iv [MJ/kg]
+    double completeVaporEnergy = 0.0;  ///< E_cv [MJ/kg], > E_iv
+    bool enabled() const noexcept { return completeVaporEnergy > incipientVaporEnergy; }
+};
 
 struct MieGruneisen {
     static constexpr std::string_view kId = "eos.mie_gruneisen";
@@ -60,14 +85,35 @@ struct MieGruneisen {
     double gruneisenGamma = 0.0;   ///< Gamma0 at rho0 [-]
     double volumeCorrection = 0.0; ///< b, first-order volume correction to Gamma [-]
     double soundSpeedFloorFraction = kDefaultSoundSpeedFloorFraction; ///< c >= this * c0
+    TillotsonExpansion expansion{}; ///< hot expanded states; off when not enabled()
+
+    /// Whether the EOS describes expanded hot states (then the solver's density cut-off takes
+    /// only tension away, not the pressure of hot expanded material).
+    bool describesExpandedStates() const noexcept { return expansion.enabled(); }
 
     /// Pressure and c^2 at density rho [g/cm^3] and specific internal energy e [MJ/kg].
     EosState evaluate(double rho, double e) const noexcept {
         const double rho0 = referenceDensity;
+        const double mu = rho / rho0 - 1.0;
+        const EosBranch solid = solidBranch(e, mu);
+        const double cFloor = soundSpeedFloorFraction * bulkSoundSpeed;
+        if (mu < 0.0 && expansion.enabled() && e > expansion.incipientVaporEnergy) {
+            return vaporisationBlend(solid, expandedBranch(rho, e, mu), e,
+                                     expansion.incipientVaporEnergy, expansion.completeVaporEnergy)
+                .state(rho, cFloor * cFloor);
+        }
+        return solid.state(rho, cFloor * cFloor);
+    }
+
+    /// Pressure only [GPa].
+    double pressure(double rho, double e) const noexcept { return evaluate(rho, e).pressure; }
+
+private:
+    EosBranch solidBranch(double e, double mu) const noexcept {
+        const double rho0 = referenceDensity;
         const double k = rho0 * bulkSoundSpeed * bulkSoundSpeed; // rho0 c0^2 [GPa]
         const double g0 = gruneisenGamma;
         const double b = volumeCorrection;
-        const double mu = rho / rho0 - 1.0;
 
         // Cold (e-independent) part f(mu) and its derivative df/dmu.
         double cold = k * mu;
@@ -88,17 +134,28 @@ struct MieGruneisen {
         }
 
         const double rhoGamma = rho0 * (g0 + b * mu); // rho Gamma(rho) = (dP/de)_rho
-        const double p = cold + rhoGamma * e;
         // (dP/drho)_e = (df/dmu + rho0 b e) / rho0, since dmu/drho = 1/rho0.
-        const double dPdRho = (dColdDmu + rho0 * b * e) / rho0;
-        const double c2 = dPdRho + p * rhoGamma / (rho * rho);
-        const double cFloor = soundSpeedFloorFraction * bulkSoundSpeed;
-        // A NaN c2 fails the comparison and stays NaN: bad input is not hidden by the floor.
-        return {p, c2 < cFloor * cFloor ? cFloor * cFloor : c2};
+        return {cold + rhoGamma * e, (dColdDmu + rho0 * b * e) / rho0, rhoGamma};
     }
 
-    /// Pressure only [GPa].
-    double pressure(double rho, double e) const noexcept { return evaluate(rho, e).pressure; }
+    /// Tillotson's expanded form on this EOS's terms (mu < 0, so the cold term is k mu).
+    EosBranch expandedBranch(double rho, double e, double mu) const noexcept {
+        const double rho0 = referenceDensity;
+        const double k = rho0 * bulkSoundSpeed * bulkSoundSpeed;
+        const double a = expansion.gasGamma;
+        const double x = rho0 / rho - 1.0;
+        const double dxDrho = -rho0 / (rho * rho);
+        const double expAlpha = std::exp(-expansion.alpha * x * x);
+        const double expBeta = std::exp(-expansion.beta * x);
+        const double rhoGamma = rho0 * (gruneisenGamma + volumeCorrection * mu);
+        const double cold = k * mu * expBeta;
+        const double bracket = (rhoGamma - a * rho) * e + cold;
+        const double dBracketDrho =
+            (volumeCorrection - a) * e + k * expBeta / rho0 - expansion.beta * cold * dxDrho;
+        return {a * rho * e + bracket * expAlpha,
+                a * e + (dBracketDrho - 2.0 * expansion.alpha * x * dxDrho * bracket) * expAlpha,
+                a * rho + (rhoGamma - a * rho) * expAlpha};
+    }
 };
 
 } // namespace hvi::material

@@ -52,6 +52,10 @@ struct Tillotson {
     double beta = 0.0;                 ///< beta [-]
     double soundSpeedFloorFraction = kDefaultSoundSpeedFloorFraction;
 
+    /// Tillotson's EOS describes hot expanded states (the solver's density cut-off takes only
+    /// tension away).
+    static constexpr bool describesExpandedStates() noexcept { return true; }
+
     EosState evaluate(double rho, double e) const noexcept {
         const double rho0 = referenceDensity;
         const double eta = rho / rho0;
@@ -60,38 +64,22 @@ struct Tillotson {
         const double dOmegaDrho = -2.0 * e / (referenceEnergy * eta * eta * eta * rho0);
         const double dOmegaDe = 1.0 / (referenceEnergy * eta * eta);
 
-        const Branch compressed = compressedBranch(rho, e, mu, omega, dOmegaDrho, dOmegaDe);
-        Branch b = compressed;
-        if (mu < 0.0 && e > incipientVaporEnergy) {
-            const Branch hot = expandedBranch(rho, e, eta, mu, omega, dOmegaDrho, dOmegaDe);
-            if (e >= completeVaporEnergy) {
-                b = hot;
-            } else {
-                const double width = completeVaporEnergy - incipientVaporEnergy;
-                const double w = (e - incipientVaporEnergy) / width;
-                b.p = w * hot.p + (1.0 - w) * compressed.p;
-                b.dPdRho = w * hot.dPdRho + (1.0 - w) * compressed.dPdRho;
-                b.dPdE =
-                    w * hot.dPdE + (1.0 - w) * compressed.dPdE + (hot.p - compressed.p) / width;
-            }
-        }
-        const double c2 = b.dPdRho + b.p / (rho * rho) * b.dPdE;
-        const double cFloor2 =
-            soundSpeedFloorFraction * soundSpeedFloorFraction * bulkModulusA / rho0;
-        return {b.p, c2 < cFloor2 ? cFloor2 : c2};
+        const EosBranch compressed = compressedBranch(rho, e, mu, omega, dOmegaDrho, dOmegaDe);
+        const EosBranch b =
+            mu < 0.0 && e > incipientVaporEnergy
+                ? vaporisationBlend(compressed,
+                                    expandedBranch(rho, e, eta, mu, omega, dOmegaDrho, dOmegaDe), e,
+                                    incipientVaporEnergy, completeVaporEnergy)
+                : compressed;
+        return b.state(rho,
+                       soundSpeedFloorFraction * soundSpeedFloorFraction * bulkModulusA / rho0);
     }
 
     double pressure(double rho, double e) const noexcept { return evaluate(rho, e).pressure; }
 
 private:
-    struct Branch {
-        double p;
-        double dPdRho; ///< at constant e
-        double dPdE;   ///< at constant rho
-    };
-
-    Branch compressedBranch(double rho, double e, double mu, double omega, double dOmegaDrho,
-                            double dOmegaDe) const noexcept {
+    EosBranch compressedBranch(double rho, double e, double mu, double omega, double dOmegaDrho,
+                               double dOmegaDe) const noexcept {
         const double rho0 = referenceDensity;
         const double coef = smallA + smallB / omega;
         const double bRhoEOverOmega2 = smallB * rho * e / (omega * omega);
@@ -101,8 +89,8 @@ private:
                 coef * rho - bRhoEOverOmega2 * dOmegaDe};
     }
 
-    Branch expandedBranch(double rho, double e, double eta, double mu, double omega,
-                          double dOmegaDrho, double dOmegaDe) const noexcept {
+    EosBranch expandedBranch(double rho, double e, double eta, double mu, double omega,
+                             double dOmegaDrho, double dOmegaDe) const noexcept {
         const double rho0 = referenceDensity;
         const double x = 1.0 / eta - 1.0;
         const double dxDrho = -1.0 / (eta * eta * rho0);

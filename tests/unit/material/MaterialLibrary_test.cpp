@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <variant>
 
 using hvi::InputError;
 using hvi::material::JohnsonCookDamage;
@@ -192,6 +193,60 @@ TEST(MaterialLibrary, UserLibraryLoadsAndMergesOverTheBuiltinOne) {
     // The user's Al6061-T6 (hydrodynamic only) replaced the built-in one.
     EXPECT_FALSE(merged.get("Al6061-T6").hasStrength());
     EXPECT_TRUE(MaterialLibrary::builtin().get("Al6061-T6").hasStrength());
+}
+
+// A user library's "patches" change one block of a built-in material and keep the rest; the
+// repository's expanded-states overlay patches every aluminium's EOS and nothing else.
+TEST(MaterialLibrary, PatchesChangeOnlyWhatTheyGive) {
+    const MaterialLibrary& builtin = MaterialLibrary::builtin();
+    const auto path = hvi::test::sourcePath("workflows/materials/expanded-states.json");
+    const MaterialLibrary patched = MaterialLibrary::fromFile(path.string(), &builtin);
+    for (const std::string& name : patched.names()) {
+        const MaterialSpec& after = patched.get(name);
+        const MaterialSpec& before = builtin.get(name);
+        const auto& eosAfter = std::get<MieGruneisen>(after.eos);
+        const auto& eosBefore = std::get<MieGruneisen>(before.eos);
+        EXPECT_TRUE(eosAfter.describesExpandedStates()) << name;
+        EXPECT_FALSE(eosBefore.describesExpandedStates()) << name;
+        EXPECT_EQ(eosAfter.expansion.gasGamma, 0.5) << name;
+        EXPECT_EQ(eosAfter.expansion.completeVaporEnergy, 13.9) << name;
+        EXPECT_EQ(eosAfter.bulkSoundSpeed, eosBefore.bulkSoundSpeed) << name;
+        EXPECT_EQ(eosAfter.gruneisenGamma, eosBefore.gruneisenGamma) << name;
+        EXPECT_EQ(after.hasStrength(), before.hasStrength()) << name;
+        EXPECT_EQ(after.description, before.description) << name;
+    }
+    // Every Mie-Grueneisen aluminium of the built-in library is patched.
+    for (const std::string& name : builtin.names()) {
+        if (name.rfind("Al", 0) == 0 &&
+            std::holds_alternative<MieGruneisen>(builtin.get(name).eos)) {
+            EXPECT_TRUE(patched.contains(name)) << name;
+        }
+    }
+}
+
+TEST(MaterialLibrary, BadPatchesAreReportedByPointer) {
+    const MaterialLibrary& builtin = MaterialLibrary::builtin();
+    const nlohmann::json doc = nlohmann::json::parse(R"({"patches": {
+        "NoSuchAl": {"eos": {"c0_km_s": 5.0}},
+        "Al2024-T3": {"eos": {"expansion": {"a": 0.5, "alpha": 5, "beta": 5, "E_iv_MJ_kg": 3,
+                                             "E_cv_MJ_kg": 2, "source": "test"}}},
+        "Al7075-T6": 3}})");
+    const std::string message =
+        inputErrorMessage([&] { MaterialLibrary::fromJson(doc, "patch.json", &builtin); });
+    EXPECT_NE(message.find("patch.json: /patches/NoSuchAl: no material 'NoSuchAl' to patch"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("/patches/Al2024-T3/eos/expansion/E_cv_MJ_kg: must exceed E_iv_MJ_kg"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("/patches/Al7075-T6: must be an object, got number"), std::string::npos)
+        << message;
+    // Without a library to lay it over, a patch has nothing to change.
+    const nlohmann::json alone = nlohmann::json::parse(R"({"patches": {"Al6061-T6": {}}})");
+    EXPECT_NE(inputErrorMessage([&] {
+                  MaterialLibrary::fromJson(alone, "alone.json");
+              }).find("/patches/Al6061-T6: no material 'Al6061-T6' to patch"),
+              std::string::npos);
 }
 
 // Every aluminium has a spall strength, read in GPa; the 6061-T6 fit's damage stops at

@@ -4,8 +4,10 @@
 #include "Tolerance.hpp"
 #include "material/eos/MieGruneisen.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <string>
 #include <vector>
 
 using hvi::material::EosState;
@@ -160,4 +162,86 @@ TEST(MieGruneisen, BatchMatchesPointwiseAndChecksLengths) {
     }
     std::vector<double> shortOut(3);
     EXPECT_THROW(hvi::material::evaluateEos(eos, rho, e, shortOut, c2), std::invalid_argument);
+}
+
+namespace {
+
+// Tillotson's aluminium expanded-branch constants (Melosh 1989, App. II; the built-in
+// Al6061-T6-Tillotson set and workflows/materials/expanded-states.json).
+MieGruneisen alExpanded() {
+    MieGruneisen eos = al();
+    eos.expansion = {.gasGamma = 0.5,
+                     .alpha = 5.0,
+                     .beta = 5.0,
+                     .incipientVaporEnergy = 3.0,
+                     .completeVaporEnergy = 13.9};
+    return eos;
+}
+
+} // namespace
+
+TEST(MieGruneisenExpansion, ValuesMatchAnIndependentEvaluation) {
+    // Reference values: the file comment's form evaluated in mpmath at 40 digits, c^2 from
+    // mpmath's own numerical derivatives of that P (not from the analytic derivatives coded
+    // here); the C++ differs by round-off (P) and by the 1e-13-level cancellation in c^2.
+    const MieGruneisen eos = alExpanded();
+    struct Case {
+        double rho, e, p, c2;
+        const char* region;
+    };
+    for (const Case& c :
+         {Case{2.16, 20.0, 80.404176239100201, 157.03606732187676, "hot expanded"},
+          Case{2.16, 8.0, 28.889894310964092, 59.529176022232336, "blend"},
+          Case{1.3515, 50.0, 35.35210493995329, 61.659075315631938, "hot, half density"}}) {
+        const EosState s = eos.evaluate(c.rho, c.e);
+        EXPECT_TRUE(near(std::string("P ") + c.region, s.pressure, c.p, 0.0, 1e-12));
+        EXPECT_TRUE(near(std::string("c^2 ") + c.region, s.soundSpeedSquared, c.c2, 0.0, 1e-10));
+    }
+    // Cold expanded states keep the solid form (below E_iv nothing changes).
+    EXPECT_EQ(eos.pressure(1.3515, 1.0), al().pressure(1.3515, 1.0));
+    // Hot debris at half density: the solid form's 229 GPa (its thermal term does not fall
+    // with density) against the branch's 35 GPa.
+    EXPECT_TRUE(
+        near("solid form at half density", al().pressure(1.3515, 50.0), 229.1365536, 0.0, 1e-12));
+}
+
+TEST(MieGruneisenExpansion, ContinuousAcrossRho0AndTheVaporisationEnergies) {
+    const MieGruneisen eos = alExpanded();
+    const double d = 1.0e-10;
+    const double rho0 = eos.referenceDensity;
+    // A jump would be O(10) GPa; continuity leaves ~ dP/drho * 2e-10 ~ 1e-8.
+    EXPECT_TRUE(near("P across rho0, e=20", eos.pressure(rho0 * (1 + d), 20.0),
+                     eos.pressure(rho0 * (1 - d), 20.0), 1e-7, 0.0));
+    for (double eEdge : {3.0, 13.9}) {
+        EXPECT_TRUE(near("P across e=" + std::to_string(eEdge), eos.pressure(2.0, eEdge + d),
+                         eos.pressure(2.0, eEdge - d), 1e-7, 0.0));
+    }
+}
+
+TEST(MieGruneisenExpansion, SoundSpeedIsTheIsentropicDerivative) {
+    const MieGruneisen eos = alExpanded();
+    for (double rho : {2.4, 2.0, 1.5, 0.8}) {
+        for (double e : {5.0, 20.0, 50.0}) {
+            // Central differences with h = 1e-5 rho: truncation ~1e-10 relative, round-off
+            // ~1e-11 / 1e-5; 1e-6 relative is far below any error in a derivative term.
+            // Where the blend keeps much of the solid's tension the slope is negative and
+            // the documented floor (0.1 c0)^2 applies (rho 0.8, e 5).
+            const double floor2 = std::pow(0.1 * eos.bulkSoundSpeed, 2);
+            EXPECT_TRUE(near("c^2 rho=" + std::to_string(rho) + " e=" + std::to_string(e),
+                             eos.evaluate(rho, e).soundSpeedSquared,
+                             std::max(isentropicSlope(eos, rho, e), floor2), 0.0, 1e-6));
+        }
+    }
+}
+
+TEST(MieGruneisenExpansion, TendsToTheGasOfGrueneisenParameterAAtLowDensity) {
+    const MieGruneisen eos = alExpanded();
+    // At rho0 / 20, x = 19 and exp(-alpha x^2) = exp(-1805) underflows: P = a rho e exactly,
+    // and c^2 = a (1 + a) e, the ideal gas of gamma = 1 + a.
+    const double rho = eos.referenceDensity / 20.0;
+    const EosState s = eos.evaluate(rho, 20.0);
+    EXPECT_TRUE(near("P / (rho e)", s.pressure / (rho * 20.0), 0.5, 0.0, 1e-14));
+    EXPECT_TRUE(near("c^2", s.soundSpeedSquared, 0.5 * 1.5 * 20.0, 0.0, 1e-14));
+    EXPECT_TRUE(eos.describesExpandedStates());
+    EXPECT_FALSE(al().describesExpandedStates());
 }
