@@ -1,9 +1,10 @@
 // The density cut-off of MaterialPackage::updatePressure (material/MaterialPackage.tpp): below
 // sph.min_density_ratio a point is fragmented. With an EOS that describes hot expanded states
-// (here Mie-Grueneisen with Tillotson's expanded branch) a hot point keeps its gas pressure,
-// which is continuous across the cut-off; a cold one carries nothing. Without the branch the
-// point carries no pressure and keeps the sound speed of the cut-off density (as before the
-// branch existed).
+// (here Mie-Grueneisen with Tillotson's expanded branch, as workflows/materials/
+// expanded-states.json gives it) a hot point keeps its gas pressure, which is continuous
+// across the cut-off; a cold one carries nothing. Without the branch the point carries no
+// pressure and keeps the sound speed of the cut-off density (as before the branch existed).
+#include "TestPaths.hpp"
 #include "Tolerance.hpp"
 #include "material/MaterialLibrary.hpp"
 #include "material/MaterialPackage.hpp"
@@ -15,17 +16,15 @@ using namespace hvi;
 
 namespace {
 
+/// Al 6061-T6 as built in, or as the repository's expanded-states overlay patches it.
 material::MaterialSpec aluminium(bool expandedStates) {
-    material::MaterialSpec spec = material::MaterialLibrary::builtin().get("Al6061-T6");
-    if (expandedStates) {
-        auto& eos = std::get<material::MieGruneisen>(spec.eos);
-        eos.expansion = {.gasGamma = 0.5,
-                         .alpha = 5.0,
-                         .beta = 5.0,
-                         .incipientVaporEnergy = 3.0,
-                         .completeVaporEnergy = 13.9};
+    const auto& builtin = material::MaterialLibrary::builtin();
+    if (!expandedStates) {
+        return builtin.get("Al6061-T6");
     }
-    return spec;
+    return material::MaterialLibrary::fromFile(
+               test::sourcePath("workflows/materials/expanded-states.json").string(), &builtin)
+        .get("Al6061-T6");
 }
 
 struct Point {
