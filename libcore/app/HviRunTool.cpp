@@ -101,7 +101,7 @@ void HviRunTool::addOptions(CLI::App& app) {
     app.add_flag("--resume", m_resume,
                  "Continue from RUN.ckpt.h5 (left by an interrupted or checkpointed run), "
                  "keeping the snapshots up to it from RUN (or from the RUN.tmp.PID a run "
-                 "killed outright left)");
+                 "killed outright left; refused when neither is there)");
     app.add_option("--checkpoint-every-s", m_checkpointEvery,
                    "Wall time between checkpoints [s] (0 = only on interrupt; default 300)")
         ->check(CLI::NonNegativeNumber);

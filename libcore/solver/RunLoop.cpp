@@ -181,6 +181,17 @@ OutputSchedule resumeFrom(const std::filesystem::path& checkpointPath,
                          "or delete the checkpoint to start afresh");
     }
     sim.restore(state);
+    // Without the interrupted run's file the new one would start at the checkpoint, and an
+    // assessment of it would miss the impact's first microseconds without a word.
+    const auto orphan = io::orphanedTemporary(runFile);
+    if (!std::filesystem::exists(runFile) && !orphan && sim.time() > 0.0) {
+        throw InputError(checkpointPath.string(), "",
+                         "the snapshots and history before its t = " + std::to_string(sim.time()) +
+                             " us are gone: neither " + runFile.string() + " nor the " +
+                             runFile.string() + ".tmp.PID an interrupted run leaves exists",
+                         "put the interrupted run's file back, or delete the checkpoint and "
+                         "run afresh");
+    }
     summary.maxEnergyError = state.extra.value("max_energy_error", 0.0);
     if (state.extra.contains("min_dt")) {
         summary.minDtUs = state.extra["min_dt"]["dt_us"].get<double>();
@@ -195,7 +206,7 @@ OutputSchedule resumeFrom(const std::filesystem::path& checkpointPath,
     if (std::filesystem::exists(runFile)) {
         schedule = scheduleOf(state, runFile, sim.scene().output.snapshotEvery);
         carryOver(runFile, schedule, writer);
-    } else if (const auto orphan = io::orphanedTemporary(runFile)) {
+    } else if (orphan) {
         schedule = scheduleOf(state, *orphan, sim.scene().output.snapshotEvery);
         carryOver(*orphan, schedule, writer);
         std::error_code ignored;

@@ -198,8 +198,8 @@ TEST(HviRunCli, ResumeWithoutACheckpointIsRefused) {
 
 // A run killed outright (SIGKILL, power loss) leaves its checkpoint and the RUN.tmp.PID it
 // was writing, and no RUN. --resume used to drop the snapshots before the checkpoint (and make
-// did not resume at all); now it carries them over from that temporary and removes it. A
-// checkpoint of another scene is refused.
+// did not resume at all); now it carries them over from that temporary and removes it, and
+// refuses to resume without it. A checkpoint of another scene is refused.
 TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
     const std::string text = longScene();
     const auto scene = writeTemp("killed.json", text);
@@ -227,6 +227,19 @@ TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
     EXPECT_NE(refused.err.find("/extra/scene_fingerprint: "), std::string::npos) << refused.err;
     EXPECT_FALSE(std::filesystem::exists(run));
     ASSERT_TRUE(hvi::io::orphanedTemporary(run).has_value());
+
+    // Without that temporary the resumed file would start at the checkpoint and lack the
+    // impact's first snapshots and history: refused, and nothing written.
+    const auto orphan = *hvi::io::orphanedTemporary(run);
+    const auto aside = tempPath("killed-aside.h5");
+    std::filesystem::rename(orphan, aside);
+    const auto lost =
+        runTool("hvi-run", scene.string() + " -o " + run.string() + " --threads 1 --resume");
+    EXPECT_EQ(lost.exitCode, 2) << lost.err;
+    EXPECT_NE(lost.err.find("are gone"), std::string::npos) << lost.err;
+    EXPECT_FALSE(std::filesystem::exists(run));
+    EXPECT_FALSE(hvi::io::orphanedTemporary(run).has_value());
+    std::filesystem::rename(aside, orphan);
 
     const auto r =
         runTool("hvi-run", scene.string() + " -o " + run.string() + " --threads 1 --resume");
