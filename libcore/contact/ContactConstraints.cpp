@@ -39,7 +39,7 @@ double againstSegment(const ContactPoints& pts, std::size_t k, Constraint& con, 
 } // namespace
 
 ConstraintSet buildConstraints(const ContactPoints& pts, const std::vector<SlaveContacts>& found,
-                               double dt, std::vector<uint8_t>& touching) {
+                               double dt) {
     ConstraintSet set;
     std::vector<Share> nodeShares, segmentShares;
     for (std::size_t k = 0; k < found.size(); ++k) {
@@ -69,9 +69,6 @@ ConstraintSet buildConstraints(const ContactPoints& pts, const std::vector<Slave
                              1.0 / pts.ps.mass[con.j];
             }
             const double size = pts.bodySize(sl.body);
-            if (gap < kTouchTolerance * size) {
-                touching[k] = 1;
-            }
             const double recovered =
                 gap > -kRecoverableOverlap * size ? kOverlapRecovery * gap : 0.0;
             con.allowed = (gap >= 0.0 ? gap : recovered) / dt;

@@ -27,9 +27,6 @@ namespace hvi::contact {
 /// slave body's spacing) treated so.
 constexpr double kOverlapRecovery = 0.2;
 constexpr double kRecoverableOverlap = 0.02;
-/// A slave closer than this fraction of its body's spacing touches its master (so a pair
-/// resting on each other does not flicker between "new" and "lasting").
-constexpr double kTouchTolerance = 0.01;
 
 struct Constraint {
     std::size_t slave = 0; ///< index into the slave list
@@ -52,10 +49,8 @@ struct ConstraintSet {
     std::vector<Share> footNodes, footSegments;
 };
 
-/// The constraints of the candidates `found` for a step dt [us]; `touching[k]` is set for
-/// every slave within kTouchTolerance of a master.
+/// The constraints of the candidates `found` for a step dt [us].
 ConstraintSet buildConstraints(const ContactPoints& points,
-                               const std::vector<SlaveContacts>& found, double dt,
-                               std::vector<uint8_t>& touching);
+                               const std::vector<SlaveContacts>& found, double dt);
 
 } // namespace hvi::contact

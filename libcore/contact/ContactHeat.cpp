@@ -63,6 +63,29 @@ struct MasterSide {
     }
 };
 
+/// The part of a constraint's relative normal velocity that the FE forces' first half kick of
+/// this step made (the slave node's kick less the master nodes' weighted kicks along n):
+/// the elements pay for that kick only through the motion left after the constraint.
+double unpaidApproach(const ContactPoints& pts, const ConstraintSet& set, const Constraint& con,
+                      double halfDt) {
+    const auto& nd = pts.nd;
+    const auto kickAlongN = [&](std::size_t node) {
+        return halfDt / nd.mass[node] *
+               (nd.fz[node] * con.nz + pts.radialFreedom(node) * nd.fr[node] * con.nr);
+    };
+    double approach = 0.0;
+    if (!pts.isParticle(con.slave)) {
+        approach += kickAlongN(pts.pointOf(con.slave));
+    }
+    if (con.target >= 0) {
+        for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
+            approach -= set.footNodes[q].weight *
+                        kickAlongN(static_cast<std::size_t>(set.footNodes[q].index));
+        }
+    }
+    return approach;
+}
+
 } // namespace
 
 void markContacts(const ContactPoints& pts, const ConstraintSet& set, StepContacts& step) {
@@ -77,31 +100,22 @@ void markContacts(const ContactPoints& pts, const ConstraintSet& set, StepContac
             }
         }
         if (con.impulse > 0.0) {
-            step.touching[k] = 1;
             ++step.contactCount;
-            if (con.target >= 0) {
-                for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
-                    if (set.footNodes[q].weight > 0.0) {
-                        step.pressedAsMaster[static_cast<std::size_t>(set.footNodes[q].index)] = 1;
-                    }
-                }
-            }
         }
     }
 }
 
-void shareHeat(const ContactPoints& pts, const ConstraintSet& set,
-               const std::vector<uint8_t>& previous, ContactEnergy& energy) {
+void shareHeat(const ContactPoints& pts, const ConstraintSet& set, double dt,
+               ContactEnergy& energy) {
     for (const auto& con : set.list) {
-        const std::size_t k = con.slave;
-        const bool isParticle = pts.isParticle(k);
-        const std::size_t idx = pts.pointOf(k);
-        const bool collision = previous[k] == 0 || isParticle || con.target < 0;
-        if (!con.kicked || !collision) {
+        if (!con.kicked) {
             continue;
         }
+        const bool isParticle = pts.isParticle(con.slave);
+        const std::size_t idx = pts.pointOf(con.slave);
         const double heat =
-            -0.5 * con.impulse * (con.approachBefore + normalVelocity(pts, set, con));
+            -con.impulse * (0.5 * (con.approachBefore + normalVelocity(pts, set, con)) -
+                            unpaidApproach(pts, set, con, 0.5 * dt));
         energy.dissipated += heat;
         const double slaveElementMass = isParticle ? 0.0 : pts.surface.nodeElementMass(pts.el, idx);
         const bool slaveIsFree = !isParticle && slaveElementMass <= 0.0;

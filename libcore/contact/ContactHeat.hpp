@@ -1,24 +1,29 @@
 // Contact step 4 (contact/KinematicContact.hpp): which points were in contact, and the
 // kinetic energy the impulses took, turned into heat.
 //
-// A new contact is a collision: the kinetic energy it takes becomes heat, so total energy is
-// conserved. So is every contact with a particle: the compatible SPH energy equation has
-// already paid, from internal energy, for the velocity the constraint removes. A lasting
-// contact between FE nodes and segments only cancels the kick of the forces pressing the
-// pair together, which the elements never paid for (their work follows the net motion,
-// computed after the constraint): no heat. A node is in contact the step after it took an
-// impulse as a slave or as a master: two touching surfaces have a constraint each way, and
-// when the impulse moved from the one to the other (the struck plate's axis node pressing
-// back on the flyer's, the step after the flyer's axis node had struck it) that pressing
-// was booked as a new collision, and the axis element of an FE plate struck by another took
-// 2.1 times its row's specific heat in the first blow.
-//
-// Each constraint's part of the energy: with J_k the impulses and v_n,k the normal
-// velocities before (0) and after (1) the passes, sum_i m_i (v1_i^2 - v0_i^2) / 2 =
-// sum_k J_k (v_n,k^0 + v_n,k^1) / 2 exactly (the velocity changes are linear in the J_k).
-// Unlike the energy of each kick as it is made, this does not depend on the order of the
-// passes: summing the kicks gave the first slave on a shared node the most heat, and the
-// first SPH column on an FE face 1.36 times the specific heat of the fifth.
+// The heat of a constraint is the kinetic energy its impulse J took, less the part of it
+// that no internal energy had paid for:
+//     Q = -J ((v_n^0 + v_n^1) / 2 - k_n),
+// with v_n^0 and v_n^1 the relative normal velocities before and after the passes and k_n
+// the part of v_n^0 made by this step's first half kick of the FE forces on its nodes (the
+// slave node's kick along n less the master nodes' weighted kicks; nothing for particles).
+// Why: sum_i m_i (v1_i^2 - v0_i^2) / 2 = sum_k J_k (v_n,k^0 + v_n,k^1) / 2 exactly (the
+// velocity changes are linear in the J_k), and it does not depend on the order of the
+// passes (summing each kick's energy as it was made gave the first slave on a shared node
+// the most heat, and the first SPH column on an FE face 1.36 times the specific heat of the
+// fifth). A particle's half kick is paid for: the SPH energy equation works with the
+// predicted velocity, which carries the kick, so a particle held against a wall pays 2 m k^2
+// a step from its internal energy and the constraint hands it back. An element pays only
+// through the motion its nodes keep after the constraint (fe/FeSolid.hpp: its strain rate is
+// that of the half-step velocities), so for a node with velocity v at the start of the step,
+// kick k and half-step velocity v' after the impulse, energy is conserved over the step when
+// the heat is m (v + k)^2 / 2 - m v'^2 / 2 + k . m (v' - v - k): the kinetic energy taken,
+// plus k . J_node. A node pressed against a surface step after step (v = k, v' = 0) then
+// makes no heat, where booking the kinetic energy taken made 2 m k^2 every step: a particle
+// squeezed between the eroding layers of a foam core took that heat, its pressure pushed the
+// elements' nodes harder into it, and its energy ran away to 2 000 MJ/kg within 0.05 us
+// (docs/notebook/validation.md). A new collision (v = v_n before, v' = 0) makes
+// m (v^2 - k^2) / 2: the collision's heat less a half kick's worth.
 //
 // The heat is shared in proportion to the masses that take it (the slave particle, the
 // elements of a slave node, a free node itself; the master segments' elements by the
@@ -40,10 +45,8 @@ namespace hvi::contact {
 
 /// Who was in contact in a step.
 struct StepContacts {
-    std::vector<uint8_t> touching;        ///< per slave: touching, or held by an impulse
-    std::vector<uint8_t> pressedAsMaster; ///< per node: took an impulse as a master
     std::vector<int32_t> touchedParticles; ///< particles whose velocity changed (may repeat)
-    std::size_t contactCount = 0;         ///< constraints with an impulse
+    std::size_t contactCount = 0;          ///< constraints with an impulse
 };
 
 /// Running totals of the heat contact made [J].
@@ -52,12 +55,12 @@ struct ContactEnergy {
     double freeNodeHeat = 0.0; ///< the part that went into free nodes
 };
 
-/// Marks the slaves held by an impulse, the master nodes pressed, the particles touched.
+/// Counts the constraints with an impulse and lists the particles they touched.
 void markContacts(const ContactPoints& points, const ConstraintSet& set, StepContacts& step);
 
-/// Turns the kinetic energy each collision took into heat (`previous`: per slave, in
-/// contact in the previous step), adding it to the specific energies and to `energy`.
-void shareHeat(const ContactPoints& points, const ConstraintSet& set,
-               const std::vector<uint8_t>& previous, ContactEnergy& energy);
+/// Turns the kinetic energy the impulses of a step dt [us] took into heat (header comment),
+/// adding it to the specific energies and to `energy`.
+void shareHeat(const ContactPoints& points, const ConstraintSet& set, double dt,
+               ContactEnergy& energy);
 
 } // namespace hvi::contact

@@ -22,16 +22,6 @@ void KinematicContact::vote(sph::ParticleSet& ps, const ParticleHalfStep& half, 
     run(ps, half, el, nd, dt, false);
 }
 
-std::vector<uint8_t> KinematicContact::previousFlags(const ContactPoints& pts) const {
-    std::vector<uint8_t> previous(pts.slaveCount(), 0);
-    if (m_inContact.size() == pts.np + pts.nd.size()) {
-        for (std::size_t k = 0; k < previous.size(); ++k) {
-            previous[k] = m_inContact[pts.isParticle(k) ? k : pts.np + pts.pointOf(k)];
-        }
-    }
-    return previous;
-}
-
 void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, fe::ElementSet& el,
                            fe::NodeSet& nd, double dt, bool constrain) {
     m_surface.update(el, nd, m_options.axisymmetric);
@@ -51,21 +41,12 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
         return;
     }
     StepContacts step;
-    step.touching.assign(pts.slaveCount(), 0);
-    step.pressedAsMaster.assign(nd.size(), 0);
-    ConstraintSet constraints = buildConstraints(pts, found, dt, step.touching);
+    ConstraintSet constraints = buildConstraints(pts, found, dt);
     solveImpulses(pts, constraints);
     markContacts(pts, constraints, step);
-    shareHeat(pts, constraints, previousFlags(pts), m_energy);
+    shareHeat(pts, constraints, dt, m_energy);
     m_contactCount = step.contactCount;
     m_touchedParticles = std::move(step.touchedParticles);
-    m_inContact.assign(pts.np + nd.size(), 0);
-    for (std::size_t k = 0; k < pts.slaveCount(); ++k) {
-        m_inContact[pts.isParticle(k) ? k : pts.np + pts.pointOf(k)] = step.touching[k];
-    }
-    for (std::size_t n = 0; n < nd.size(); ++n) {
-        m_inContact[pts.np + n] |= step.pressedAsMaster[n];
-    }
 }
 
 } // namespace hvi::contact

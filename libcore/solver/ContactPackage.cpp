@@ -1,6 +1,5 @@
 #include "solver/ContactPackage.hpp"
 
-#include "core/Error.hpp"
 #include "io/CheckpointFields.hpp"
 
 namespace hvi::solver {
@@ -26,21 +25,13 @@ void ContactPackage::prepare(double dtGuess) {
 }
 
 void ContactPackage::save(io::CheckpointState& s) const {
-    io::putFlags(s, "contact_flags", m_contact.contactFlags());
     s.extra["contact_dt_us"] = m_contact.stableTimeStep();
     s.extra["contact_heat_J"] = m_contact.dissipatedEnergy();
     s.extra["free_node_heat_J"] = m_contact.freeNodeHeat();
 }
 
 void ContactPackage::restore(const io::CheckpointState& s) {
-    // The flags' count follows the contact points of the last step, not a fixed set.
-    const auto stored = s.ints.find("contact_flags");
-    if (stored == s.ints.end()) {
-        throw InputError("<checkpoint>", "/contact_flags", "missing",
-                         "a checkpoint written by this version of hvi-run");
-    }
-    m_contact.restoreState(io::timeStepOf(s, "contact_dt_us"),
-                           std::vector<uint8_t>(stored->second.begin(), stored->second.end()));
+    m_contact.restoreStableTimeStep(io::timeStepOf(s, "contact_dt_us"));
     m_contact.restoreDissipatedEnergy(s.extra.at("contact_heat_J"));
     m_contact.restoreFreeNodeHeat(s.extra.value("free_node_heat_J", 0.0));
 }

@@ -6,10 +6,12 @@
 // particle spacing (element size for an FE body), and the total z-momentum is conserved to
 // 1e-6 of the initial momentum through the contact (momentum exchange is pairwise and exact;
 // planar mode, where the SPH pair forces conserve momentum to round-off, so that the check
-// measures the contact alone). The energy error is printed, not asserted: the contact
-// constraint stops each touching pair inelastically (that loss is booked as heat), and in
-// this low-speed elastic rebound the residual error is 2 % (FE block) and 8 % (SPH block) of
-// the small impact energy; docs/formulation.md discusses it.
+// measures the contact alone). The total energy is conserved to 0.5 % of the small impact
+// energy: measured 0.12 % (SPH block) and 0.22 % (FE block). The contact stops each touching
+// pair inelastically, and books as heat the kinetic energy that takes less what the
+// elements' forces added unpaid in the step (contact/ContactHeat.hpp); booking all of it,
+// the errors were 7.8 % and 37 %, and with the pressing of lasting FE contacts left out,
+// 7.8 % and 2.2 %.
 #include "SceneRun.hpp"
 #include "SyntheticRun.hpp"
 #include "Tolerance.hpp"
@@ -154,6 +156,7 @@ void check(const DropResult& r) {
     EXPECT_LT(r.finalProjectileVz, 0.0) << "the projectile must rebound";
     EXPECT_LE(r.maxSink, 0.1 * kSpacing) << "interpenetration beyond a tenth of a spacing";
     EXPECT_LT(r.momentumDrift, 1e-6);
+    EXPECT_LT(r.maxEnergyError, 5e-3);
 }
 
 } // namespace
@@ -206,8 +209,8 @@ void expectAxisNodesOnAxis(const fe::NodeSet& nd, const std::vector<double>& r0)
 // (0.891 km/s on the axis to 0.848 km/s at r = 0.28 mm just after touching) and the axis
 // element at 0.42 plastic strain against 0.24 beside it (+71 %). The impulses solved
 // together gave +4 %, +9 % by 2026-11-23 (with the axis nodes drifting off the axis), +12 %
-// since the axis nodes take no radial impulse, +3.6 % since a surface pressing back is no new
-// collision (UniformFeBlowHeatsTheFrontRowsAlike); the bar is 8 %, which the +12 % fails.
+// since the axis nodes take no radial impulse, +3.6 % since a surface pressing back makes no
+// heat (UniformFeBlowHeatsTheFrontRowsAlike); the bar is 8 %, which the +12 % fails.
 TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
     solver::Simulation sim(uniformImpactScene(false),
                            scene::sceneLibrary(json::object(), "<test>"));
@@ -255,12 +258,12 @@ TEST(FeContact, UniformImpactStrainsTheAxisElementLikeItsNeighbours) {
 }
 
 // FE on FE: the first blow heats both front rows alike at every radius. Two touching
-// surfaces have a constraint each way; a node that took an impulse as a master is in contact
-// the next step too, so when the impulse passes to the other constraint (the struck plate's
-// axis node pressing back on the flyer's) it is not booked as a new collision. It was, and
-// the target's axis element had 0.220 MJ/kg against 0.104 beside it at 0.011 us (2.1 times;
-// the flyer's 0.215 against 0.101). Each side's heat goes to the elements around its nodes
-// by mass (contact/ContactHeat.hpp).
+// surfaces have a constraint each way; when the impulse passes to the other constraint (the
+// struck plate's axis node pressing back on the flyer's), that pressing is the unpaid kick of
+// the elements' forces and makes no heat (contact/ContactHeat.hpp). Booked as a new
+// collision, it gave the target's axis element 0.220 MJ/kg against 0.104 beside it at
+// 0.011 us (2.1 times; the flyer's 0.215 against 0.101). Each side's heat goes to the
+// elements around its nodes by mass.
 TEST(FeContact, UniformFeBlowHeatsTheFrontRowsAlike) {
     solver::Simulation sim(uniformImpactScene(false),
                            scene::sceneLibrary(json::object(), "<test>"));
