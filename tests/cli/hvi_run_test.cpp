@@ -207,6 +207,10 @@ TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
     const auto checkpoint = tempPath("killed.ckpt.h5");
     std::filesystem::remove(run);
     std::filesystem::remove(checkpoint);
+    // A failed earlier run of this test may have left its temporaries behind.
+    while (const auto stale = hvi::io::orphanedTemporary(run)) {
+        std::filesystem::remove(*stale);
+    }
     // Start it, wait for its first checkpoint (0.3 s of wall time in), then kill -9.
     const std::string script = signalAfterFirstCheckpoint(scene, run, "9") + "; exit 0";
     ASSERT_EQ(std::system(script.c_str()), 0);
