@@ -19,11 +19,10 @@
 // kick k and half-step velocity v' after the impulse, energy is conserved over the step when
 // the heat is m (v + k)^2 / 2 - m v'^2 / 2 + k . m (v' - v - k): the kinetic energy taken,
 // plus k . J_node. A node pressed against a surface step after step (v = k, v' = 0) then
-// makes no heat, where booking the kinetic energy taken made 2 m k^2 every step: a particle
-// squeezed between the eroding layers of a foam core took that heat, its pressure pushed the
-// elements' nodes harder into it, and its energy ran away to 2 000 MJ/kg within 0.05 us
-// (docs/notebook/validation.md). A new collision (v = v_n before, v' = 0) makes
-// m (v^2 - k^2) / 2: the collision's heat less a half kick's worth.
+// makes no heat (booking all the kinetic energy taken would make 2 m k^2 every step, a
+// runaway where eroding layers squeeze a particle: docs/notebook/contact-heat.md). A new
+// collision (v = v_n before, v' = 0) makes m (v^2 - k^2) / 2: the collision's heat less a
+// half kick's worth.
 //
 // The heat is shared in proportion to the masses that take it (the slave particle, the
 // elements of a slave node, a free node itself; the master segments' elements by the
