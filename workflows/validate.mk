@@ -38,6 +38,10 @@ AFTER_VERDICT = @$(HVI_VALIDATE) progress --set $(SET) --out-dir $(OUT) --jobs $
 # run again.
 ARCHIVE ?= $(ROOT)/data/validation/verdicts/$(RESOLUTION)
 
+# The kept verdicts of the other spacings: the report's verdict-stability table.
+OTHER_KEPT := $(filter-out $(ARCHIVE) $(ROOT)/data/validation/verdicts/$(RESOLUTION),$(wildcard $(ROOT)/data/validation/verdicts/*))
+COMPARE_FLAGS := $(foreach d,$(OTHER_KEPT),--compare-kept $(d))
+
 .PHONY: validate validate-ble validate-keep validate-forget slurm-validate
 .SECONDARY:
 .DELETE_ON_ERROR:
@@ -48,11 +52,13 @@ validate: $(REPORT)
 # the kept ones of the hydrocode (ARCHIVE, below), and "not run" for the rest.
 KEPT_VERDICTS = $(foreach c,$(CASES),$(if $(wildcard $(ARCHIVE)/$(c).json),$(OUT)/$(c)/verdict.json))
 validate-ble: $(foreach c,$(CASES),$(OUT)/$(c)/ble.json) $(KEPT_VERDICTS)
-	$(HVI_VALIDATE) report --set $(SET) --out-dir $(OUT) --resolution-mm $(RESOLUTION) -o $(REPORT)
+	$(HVI_VALIDATE) report --set $(SET) --out-dir $(OUT) --resolution-mm $(RESOLUTION) \
+	  $(COMPARE_FLAGS) -o $(REPORT)
 	@echo "validate-ble: $(words $(CASES)) cases -> $(REPORT)"
 
 $(REPORT): $(foreach c,$(CASES),$(OUT)/$(c)/verdict.json $(OUT)/$(c)/ble.json)
-	$(HVI_VALIDATE) report --set $(SET) --out-dir $(OUT) --resolution-mm $(RESOLUTION) -o $@
+	$(HVI_VALIDATE) report --set $(SET) --out-dir $(OUT) --resolution-mm $(RESOLUTION) \
+	  $(COMPARE_FLAGS) -o $@
 	@echo "validate: $(words $(CASES)) cases -> $@"
 
 # Kept with the paths inside them relative to the repository (no machine's path in the files).

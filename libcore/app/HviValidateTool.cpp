@@ -33,6 +33,10 @@ void HviValidateTool::addOptions(CLI::App& app) {
     app.add_option("--out-dir", m_outDir, "inputs: where to write; report: the case directories");
     app.add_option("-o,--output", m_output, "report: the markdown file ('-' = stdout)");
     app.add_option("--resolution-mm", m_resolution, "report: the spacing the runs used [mm]");
+    app.add_option("--compare-kept", m_compareKept,
+                   "report: a directory of kept verdicts (<case>.json) at another spacing, named "
+                   "by that spacing (data/validation/verdicts/0.04); repeatable: the "
+                   "verdict-stability table");
     app.add_flag("--interleave", m_interleave,
                  "list: the shield types in turn (the run order of make validate)");
     app.add_option("--csv", m_csv, "convergence: also the table as CSV");
@@ -145,6 +149,17 @@ void HviValidateTool::execute() {
     validation::ReportOptions options;
     options.selection = m_set;
     options.resolution = m_resolution;
+    for (const auto& dir : m_compareKept) {
+        if (!fs::is_directory(dir)) {
+            throw InputError("<flags>", "/compare_kept", dir + " is no directory",
+                             "a directory of kept verdicts, e.g. data/validation/verdicts/0.04");
+        }
+        fs::path path(dir);
+        if (path.filename().empty()) { // a trailing slash
+            path = path.parent_path();
+        }
+        options.otherSpacings.emplace_back(path.filename().string(), path);
+    }
     const std::string text = validation::validationReport(cases, m_outDir, options);
     if (m_output == "-") {
         std::cout << text;

@@ -22,6 +22,7 @@
 #include "tool/Tool.hpp"
 
 #include <string>
+#include <vector>
 
 namespace hvi::app {
 
@@ -42,6 +43,7 @@ private:
     std::string m_outDir;
     std::string m_output = "-";
     std::string m_resolution;
+    std::vector<std::string> m_compareKept;
     int m_jobs = 1;
     bool m_interleave = false;
     std::string m_csv, m_plot, m_setup;

@@ -54,12 +54,11 @@ std::string fmt(const char* format, double value) {
     return buf;
 }
 
-Row readRow(const Case& c, const fs::path& dir) {
-    Row row;
-    row.c = &c;
-    if (const auto v = readIfPresent(dir / "verdict.json")) {
+/// The hydrocode's part of a row from an hvi-assess verdict file, if there is one.
+void readVerdict(Row& row, const fs::path& file) {
+    if (const auto v = readIfPresent(file)) {
         if (!v->contains("damage_grade")) {
-            throw InputError((dir / "verdict.json").string(), "/damage_grade",
+            throw InputError(file.string(), "/damage_grade",
                              "is missing: the verdict predates the damage grades",
                              "a verdict of this hvi-assess (delete it and rerun make validate)");
         }
@@ -92,6 +91,12 @@ Row readRow(const Case& c, const fs::path& dir) {
             row.energyError = member(*v, "energy_error").get<double>();
         }
     }
+}
+
+Row readRow(const Case& c, const fs::path& dir) {
+    Row row;
+    row.c = &c;
+    readVerdict(row, dir / "verdict.json");
     if (const auto b = readIfPresent(dir / "ble.json")) {
         const json& perf = member(*b, "performance");
         if (perf.is_object() && member(perf, "verdict").is_string()) {
@@ -122,6 +127,71 @@ struct Tally {
 
 std::string speedBand(double v) {
     return v < 3.0 ? "< 3 km/s" : v <= 7.0 ? "3-7 km/s" : "> 7 km/s";
+}
+
+/// One verdict in a cell: "P, perforation, axis, 26 s".
+std::string verdictCell(const Row& r) {
+    if (!r.ours) {
+        return "–";
+    }
+    std::string cell = *r.ours;
+    if (r.grade && !r.grade->empty()) {
+        cell += ", " + *r.grade;
+    }
+    cell += r.axisOnly ? ", axis" : "";
+    cell += r.ours == std::string("NP") && !r.final ? ", provisional" : "";
+    if (r.wallS) {
+        cell += ", " + std::string(r.wallPartOnly ? "≥" : "") + fmt("%.0f", *r.wallS) + " s";
+    }
+    return cell;
+}
+
+/// The cases that have a verdict at another spacing too (ReportOptions::otherSpacings), side
+/// by side: a verdict that changes with the spacing measures the discretisation, not the
+/// shield.
+std::string stabilitySection(const std::vector<Row>& rows, const ReportOptions& options) {
+    std::ostringstream md;
+    int compared = 0, kept = 0;
+    std::ostringstream table;
+    for (const auto& r : rows) {
+        std::vector<Row> at;
+        bool any = false, same = true;
+        for (const auto& [label, dir] : options.otherSpacings) {
+            Row o;
+            o.c = r.c;
+            readVerdict(o, dir / (r.c->id + ".json"));
+            any |= o.ours.has_value();
+            same &= !o.ours || !r.ours || *o.ours == *r.ours;
+            at.push_back(o);
+        }
+        if (!any) {
+            continue;
+        }
+        ++compared;
+        kept += same && r.ours ? 1 : 0;
+        table << "| " << r.c->id << " | " << toString(r.c->shield) << " | " << r.c->result << " | "
+              << verdictCell(r);
+        for (const auto& o : at) {
+            table << " | " << verdictCell(o);
+        }
+        table << " |\n";
+    }
+    if (compared == 0) {
+        return {};
+    }
+    md << "## Verdict stability over the spacing\n\n"
+       << "The cases run at other spacings too (the kept verdicts of each): " << kept << " of "
+       << compared << " keep their verdict at every spacing run.\n\n| case | shield | test | "
+       << (options.resolution.empty() ? std::string("this run") : options.resolution + " mm");
+    for (const auto& [label, dir] : options.otherSpacings) {
+        md << " | " << label << " mm";
+    }
+    md << " |\n|---|---|---|---|";
+    for (std::size_t k = 0; k < options.otherSpacings.size(); ++k) {
+        md << "---|";
+    }
+    md << "\n" << table.str() << "\n";
+    return md.str();
 }
 
 } // namespace
@@ -235,7 +305,7 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
            << (r.endUs ? fmt("%.1f", *r.endUs) + (r.complete ? "" : " (partial)") : std::string(""))
            << " |\n";
     }
-    md << "\n## Assumptions\n\n";
+    md << "\n" << stabilitySection(rows, options) << "## Assumptions\n\n";
     for (const auto& c : cases) {
         for (const auto& a : c.assumptions) {
             md << "- " << c.id << ": " << a << "\n";

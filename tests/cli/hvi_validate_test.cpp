@@ -67,6 +67,22 @@ TEST(HviValidateCli, AnUnknownCaseIsOneLineAndNoOutput) {
     EXPECT_NE(set.err.find("/set"), std::string::npos) << set.err;
 }
 
+TEST(HviValidateCli, AMissingComparisonDirectoryIsOneLineAndNoReport) {
+    const fs::path dir = tempPath("validate_compare");
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path report = dir / "validation.md";
+    const auto r = runTool("hvi-validate", "report --set quick --out-dir " + dir.string() +
+                                               " --compare-kept " + (dir / "0.04").string() +
+                                               " -o " + report.string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("/compare_kept: " + (dir / "0.04").string() + " is no directory"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(report));
+}
+
 TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
     const fs::path out = tempPath("validate_ci");
     fs::remove_all(out);

@@ -17,7 +17,8 @@
 // TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_CLOSURE=c sets its
 // failure.compression_closure, TAYLOR_WHERE=1 lists the failed elements, TAYLOR_SPH_KERNEL
 // and TAYLOR_SPH_HFAC set the SPH kernel and h / spacing, TAYLOR_SPH_ASTRESS its artificial
-// stress epsilon; each run prints the largest principal tension of the rod and where.
+// stress epsilon, TAYLOR_DIAG=1 each SPH point's failure (FailureLog); each run prints the largest
+// principal tension of the rod and where.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "material/MaterialLibrary.hpp"
@@ -144,6 +145,34 @@ void trackTension(const Set& set, double time, Tension& t) {
     }
 }
 
+/// TAYLOR_DIAG=1 (SPH rods): each rod particle as it fails, with its plastic strain and its
+/// mean stress triaxiality over its plastic flow (weighted by the plastic strain increments),
+/// which tells a failure in tension from one in compressive shear.
+struct FailureLog {
+    std::vector<double> damage, strain, triaxialityWork;
+    void observe(const sph::ParticleSet& ps, double time) {
+        damage.resize(ps.size(), 0.0);
+        strain.resize(ps.size(), 0.0);
+        triaxialityWork.resize(ps.size(), 0.0);
+        for (std::size_t i = 0; i < ps.size(); ++i) {
+            const double seq = material::StressDeviator{ps.szz[i], ps.srr[i], ps.srz[i]}.vonMises();
+            const double dEp = ps.plasticStrain[i] - strain[i];
+            if (seq > 0.0 && dEp > 0.0) {
+                triaxialityWork[i] += dEp * (-ps.p[i] / seq);
+            }
+            if (ps.body[i] == 0 && ps.damage[i] >= 1.0 && damage[i] < 1.0) {
+                std::printf(
+                    "particle %zu fails at t %.2f us, z %.2f r %.2f mm: plastic strain %.3f, "
+                    "mean triaxiality %.2f\n",
+                    i, time, ps.z[i], ps.r[i], ps.plasticStrain[i],
+                    triaxialityWork[i] / std::max(strain[i], 1e-12));
+            }
+            damage[i] = ps.damage[i];
+            strain[i] = ps.plasticStrain[i];
+        }
+    }
+};
+
 /// The rod (body 0) is meshed with finite elements (the anvil may be, whatever the rod is).
 bool feRod(const solver::Simulation& sim) {
     if (!sim.finiteElements()) {
@@ -221,7 +250,12 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
     solver::Simulation sim(scene,
                            scene::sceneLibrary(doc.value("materials", json::object()), "<test>"));
     Tension tension;
+    FailureLog failures;
+    const bool diagnose = std::getenv("TAYLOR_DIAG") != nullptr;
     test::runUntil(sim, kEndTimeUs, [&](const solver::Simulation& s) {
+        if (diagnose && !feRod(s)) {
+            failures.observe(s.particles(), s.time());
+        }
         if (feRod(s)) {
             trackTension(*s.finiteElements(), s.time(), tension);
         } else {

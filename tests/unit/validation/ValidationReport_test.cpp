@@ -40,7 +40,7 @@ TEST(ValidationReport, CountsAgreementPerShieldAndTheConfusionMatrix) {
     fs::create_directories(out / "A1077");
     std::ofstream(out / "A1077" / "ble.json")
         << R"({"performance": {"verdict": "NP", "critical_over_projectile_diameter": 1.25}})";
-    const std::string md = validation::validationReport(cases, out, {"quick", "0.04"});
+    const std::string md = validation::validationReport(cases, out, {"quick", "0.04", {}});
     EXPECT_NE(md.find("| source_study foam | 2 | 1/2 (50 %) | 1/2 (50 %) | 1/2 (50 %) |"),
               std::string::npos)
         << md;
@@ -76,7 +76,7 @@ TEST(ValidationReport, MarksTheWallTimeOfARunTimedByItsLastPartOnly) {
     withRun("HITF03147-2", {{"resumed", true}, {"wall_time_s", 10.0}}); // an older build
     withRun("HITF03147-3",
             {{"resumed", true}, {"earlier_wall_time_s", 6.0}, {"this_wall_time_s", 4.0}});
-    const std::string md = validation::validationReport(cases, out, {"quick", "0.04"});
+    const std::string md = validation::validationReport(cases, out, {"quick", "0.04", {}});
     EXPECT_NE(md.find("| HITF03147-2 | foam | 1.1 | 6.69 | NP | NP |"), std::string::npos) << md;
     EXPECT_NE(md.find(" | ≥10 | "), std::string::npos) << md;
     EXPECT_EQ(md.find(" | ≥10 | ", md.find(" | ≥10 | ") + 1), std::string::npos) << md;
@@ -84,4 +84,38 @@ TEST(ValidationReport, MarksTheWallTimeOfARunTimedByItsLastPartOnly) {
                       "part only, marked ≥)."),
               std::string::npos)
         << md;
+}
+
+// The verdict-stability table: the cases that have a kept verdict at another spacing, side by
+// side, and how many keep their verdict; a case with none elsewhere is left out of it.
+TEST(ValidationReport, TabulatesTheVerdictsKeptAtOtherSpacings) {
+    const auto cases = validation::selectCases("quick");
+    const fs::path out = test::tempPath("validation_report_stability");
+    fs::remove_all(out);
+    writeCase(out / "run" / "HITF03147-2", "P", false, 1.2);
+    writeCase(out / "run" / "HITF03147-3", "P", false, 1.3);
+    writeCase(out / "run" / "A1076", "P", false, 1.8);
+    // Kept verdicts at 0.04 mm: one flips, one stays, A1076 was not run there.
+    writeCase(out / "k" / "a", "NP", false, 1.2);
+    writeCase(out / "k" / "b", "P", true, 1.3);
+    fs::create_directories(out / "0.04");
+    fs::rename(out / "k" / "a" / "verdict.json", out / "0.04" / "HITF03147-2.json");
+    fs::rename(out / "k" / "b" / "verdict.json", out / "0.04" / "HITF03147-3.json");
+    validation::ReportOptions options{"quick", "0.08", {}};
+    options.otherSpacings = {{"0.04", out / "0.04"}};
+    const std::string md = validation::validationReport(cases, out / "run", options);
+    EXPECT_NE(md.find("1 of 2 keep their verdict at every spacing run."), std::string::npos) << md;
+    EXPECT_NE(md.find("| case | shield | test | 0.08 mm | 0.04 mm |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| HITF03147-2 | foam | NP | P, perforation, 10 s | NP, perforation, 10 s |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| HITF03147-3 | foam | P | P, perforation, 10 s | P, perforation, axis, "
+                      "10 s |"),
+              std::string::npos)
+        << md;
+    EXPECT_EQ(md.find("| A1076 | whipple | P | P"), std::string::npos) << md;
+    // Without kept verdicts elsewhere there is no table.
+    EXPECT_EQ(validation::validationReport(cases, out / "run", {"quick", "0.08", {}})
+                  .find("Verdict stability"),
+              std::string::npos);
 }
