@@ -167,8 +167,10 @@ std::string stabilitySection(const std::vector<Row>& rows, const ReportOptions& 
         if (!any) {
             continue;
         }
-        ++compared;
-        kept += same && r.ours ? 1 : 0;
+        if (r.ours) { // a verdict at two spacings or more
+            ++compared;
+            kept += same ? 1 : 0;
+        }
         table << "| " << r.c->id << " | " << toString(r.c->shield) << " | " << r.c->result << " | "
               << verdictCell(r);
         for (const auto& o : at) {
@@ -176,12 +178,13 @@ std::string stabilitySection(const std::vector<Row>& rows, const ReportOptions& 
         }
         table << " |\n";
     }
-    if (compared == 0) {
+    if (table.tellp() == 0) {
         return {};
     }
     md << "## Verdict stability over the spacing\n\n"
-       << "The cases run at other spacings too (the kept verdicts of each): " << kept << " of "
-       << compared << " keep their verdict at every spacing run.\n\n| case | shield | test | "
+       << "The cases run at other spacings too (the kept verdicts of each): " << kept << " of the "
+       << compared << " with verdicts at two spacings or more keep their verdict at every "
+       << "spacing run.\n\n| case | shield | test | "
        << (options.resolution.empty() ? std::string("this run") : options.resolution + " mm");
     for (const auto& [label, dir] : options.otherSpacings) {
         md << " | " << label << " mm";
