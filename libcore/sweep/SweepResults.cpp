@@ -39,6 +39,19 @@ std::string cell(const json& v) {
     return s.str();
 }
 
+// A test is of the swept shield only if it used the same alloys: the material a panel names for
+// a part (its own key, else the panel's one "material"), when it names one, must be the test's.
+bool sameMaterial(const json& panel, const char* key, const std::string& tested) {
+    const std::string named = panel.value(key, panel.value("material", std::string()));
+    return named.empty() || named == tested;
+}
+
+bool sameCoreMaterial(const json& panel, const std::string& tested) {
+    const std::string named =
+        panel.value("foil_material", panel.value("core_material", std::string()));
+    return named.empty() || named == tested;
+}
+
 validation::Shield shieldOf(const json& panel) {
     if (panel.contains("cell_size_mm")) {
         return validation::Shield::Honeycomb;
@@ -100,7 +113,10 @@ std::vector<TestShot> testsOfShield(const json& spec) {
                            : close(c.diameterMm, diameter);
         if (c.shield != shield || !fixedMatches ||
             !close(c.front.thicknessMm, panel.at("front_facesheet_mm").get<double>()) ||
-            !close(c.gapMm, panel.at("core_thickness_mm").get<double>())) {
+            !close(c.gapMm, panel.at("core_thickness_mm").get<double>()) ||
+            !sameMaterial(panel, "front_facesheet_material", c.front.material) ||
+            !sameMaterial(panel, "rear_facesheet_material", c.rear.material) ||
+            !sameCoreMaterial(panel, c.coreMaterial)) {
             continue;
         }
         out.push_back({c.id, c.velocityKmS, sweepsDiameter ? c.diameterMm : c.rear.thicknessMm,

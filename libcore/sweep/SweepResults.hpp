@@ -30,9 +30,10 @@ struct TestShot {
     bool perforated = false;
 };
 
-/// The validation tests (libcore/validation) of the swept shield: same shield type, and the
+/// The validation tests (libcore/validation) of the swept shield: same shield type; the
 /// front plate, the gap and the parameter not swept (rear wall or diameter) within 2 % of the
-/// sweep's, as tests of one series vary by; their speed and swept value.
+/// sweep's, as tests of one series vary by; the same plate and core alloys where the panel
+/// names them. Their speed and swept value.
 std::vector<TestShot> testsOfShield(const nlohmann::json& spec);
 
 } // namespace hvi::sweep
