@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "io/JsonInput.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -21,6 +22,9 @@ struct Row {
     std::optional<std::string> ours, grade;
     bool final = false, axisOnly = false;
     std::optional<double> wallS, energyError, endUs;
+    /// A P's outermost failure of the rear wall: the larger of the perforation's and the
+    /// detached spall's radius (docs/metrics.md), to tell a speck at the axis from a hole.
+    std::optional<double> failureRadiusMm;
     /// A resumed run whose earlier parts were not timed (a checkpoint of a build before the
     /// run facts' earlier_wall_time_s): wallS is its last part only, a lower bound.
     bool wallPartOnly = false;
@@ -69,6 +73,15 @@ void readVerdict(Row& row, const fs::path& file) {
                             : std::string();
             row.final = member(*v, "verdict_final") == true;
             row.axisOnly = member(*v, "axis_band_only") == true;
+            if (*row.ours == "P") {
+                const json& wall = member(*v, "rear_wall");
+                for (const char* key : {"perforation_radius_mm", "spall_radius_mm"}) {
+                    if (member(wall, key).is_number()) {
+                        row.failureRadiusMm = std::max(row.failureRadiusMm.value_or(0.0),
+                                                       member(wall, key).get<double>());
+                    }
+                }
+            }
         }
         if (member(*v, "wall_time_s").is_number()) {
             row.wallS = member(*v, "wall_time_s").get<double>();
@@ -214,7 +227,8 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
                                       : ", particle spacing " + options.resolution + " mm")
        << ". A verdict is P when the rear wall is perforated or sheds detached spall "
           "(docs/metrics.md). `final`: a P, or an NP with the wall at rest at the end of the "
-          "run. `axis`: every sign of failure lies in the axis band. BLE: the NASA JSC "
+          "run. `axis`: every sign of failure lies in the axis band. `fail r`: for a P, the "
+          "outermost radius of the rear wall's perforation or detached spall. BLE: the NASA JSC "
           "equation of the same shield (`ble-size`), d/d_c its ratio of projectile to "
           "critical diameter.\n\n";
 
@@ -291,9 +305,10 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
     md << "\n\n";
 
     md << "## Cases\n\n"
-       << "| case | shield | d mm | V km/s | test | ours | grade | final | axis | BLE | d/d_c | "
-          "run s | energy error | end µs "
-          "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+       << "| case | shield | d mm | V km/s | test | ours | grade | final | axis | fail r mm | BLE "
+          "| "
+          "d/d_c | run s | energy error | end µs "
+          "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
           "\n";
     for (const auto& r : rows) {
         const Case& c = *r.c;
@@ -301,7 +316,9 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
            << " | " << fmt("%.3g", c.velocityKmS) << " | " << c.result << " | "
            << (r.ours ? *r.ours : std::string("not run")) << " | " << r.grade.value_or("") << " | "
            << (r.ours ? (r.final ? "yes" : "no") : "") << " | "
-           << (r.ours && r.axisOnly ? "yes" : "") << " | " << r.ble.value_or("–") << " | "
+           << (r.ours && r.axisOnly ? "yes" : "") << " | "
+           << (r.failureRadiusMm ? fmt("%.2f", *r.failureRadiusMm) : std::string("")) << " | "
+           << r.ble.value_or("–") << " | "
            << (r.bleRatio ? fmt("%.2f", *r.bleRatio) : std::string("–")) << " | "
            << (r.wallS ? (r.wallPartOnly ? "≥" : "") + fmt("%.0f", *r.wallS) : std::string(""))
            << " | " << (r.energyError ? fmt("%.1e", *r.energyError) : std::string("")) << " | "

@@ -14,12 +14,13 @@ namespace fs = std::filesystem;
 namespace {
 
 void writeCase(const fs::path& dir, const std::string& verdict, bool axisOnly, double bleRatio,
-               const std::string& solver = "abc1234") {
+               const std::string& solver = "abc1234",
+               const nlohmann::json& rearWall = nlohmann::json::object()) {
     fs::create_directories(dir);
-    nlohmann::json v = {{"verdict", verdict},         {"damage_grade", "perforation"},
-                        {"verdict_final", true},      {"axis_band_only", axisOnly},
-                        {"wall_time_s", 10.0},        {"energy_error", 1e-3},
-                        {"solver", {{"git", solver}}}};
+    nlohmann::json v = {{"verdict", verdict},          {"damage_grade", "perforation"},
+                        {"verdict_final", true},       {"axis_band_only", axisOnly},
+                        {"wall_time_s", 10.0},         {"energy_error", 1e-3},
+                        {"solver", {{"git", solver}}}, {"rear_wall", rearWall}};
     std::ofstream(dir / "verdict.json") << v.dump();
     nlohmann::json b = {{"performance",
                          {{"verdict", bleRatio >= 1.0 ? "P" : "NP"},
@@ -33,9 +34,12 @@ TEST(ValidationReport, CountsAgreementPerShieldAndTheConfusionMatrix) {
     const auto cases = validation::selectCases("quick"); // -2 NP, -3 P, A1076 P, A1077 NP
     const fs::path out = test::tempPath("validation_report");
     fs::remove_all(out);
-    writeCase(out / "HITF03147-2", "P", false, 1.2);     // false alarm; the BLE too
-    writeCase(out / "HITF03147-3", "P", false, 1.3);     // right
-    writeCase(out / "A1076", "P", true, 1.8, "0ld5017"); // right, on the axis band alone
+    writeCase(out / "HITF03147-2", "P", false, 1.2); // false alarm; the BLE too
+    // Right, perforated to 0.5 mm with spall from out to 1.25 mm: the outer one is its radius.
+    writeCase(out / "HITF03147-3", "P", false, 1.3, "abc1234",
+              {{"perforation_radius_mm", 0.5}, {"spall_radius_mm", 1.25}});
+    writeCase(out / "A1076", "P", true, 1.8, "0ld5017", // right, on the axis band alone
+              {{"perforation_radius_mm", 0.12}, {"spall_radius_mm", nullptr}});
     // A1077 not run: only its ble.json.
     fs::create_directories(out / "A1077");
     std::ofstream(out / "A1077" / "ble.json")
@@ -52,6 +56,9 @@ TEST(ValidationReport, CountsAgreementPerShieldAndTheConfusionMatrix) {
     EXPECT_NE(md.find("axis band alone: 1"), std::string::npos) << md;
     EXPECT_NE(md.find("Not run: 1 of 4"), std::string::npos) << md;
     EXPECT_NE(md.find("| A1077 | whipple | 2 | 6.77 | NP | not run |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| perforation | yes |  | 1.25 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| perforation | yes | yes | 0.12 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| perforation | yes |  |  |"), std::string::npos) << md; // a P, no radius
     EXPECT_NE(md.find("Wall time of the runs: 30 s"), std::string::npos) << md;
     // Which solver made the verdicts (kept ones may be older than the code).
     EXPECT_NE(md.find("Runs made by hvi-run build `0ld5017` (1), `abc1234` (2)."),
