@@ -7,11 +7,14 @@
 #include "TestPaths.hpp"
 #include "io/JsonInput.hpp"
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
+#include <sys/types.h>
+#include <vector>
 
 using namespace hvi::test;
 namespace fs = std::filesystem;
@@ -30,7 +33,7 @@ int countLines(const fs::path& path) {
 /// A BIN directory with the real scene writer and hvi-sweep, and a solver whose verdict is P
 /// for rear walls thinner than 0.8 mm per km/s of impact speed. Each stand-in run appends a
 /// line to runs.log.
-fs::path standInBin(const fs::path& dir) {
+fs::path standInBin(const fs::path& dir, double runSeconds = 0.0) {
     fs::remove_all(dir);
     for (const char* tool : {"foam2layers", "hvi-sweep"}) {
         fs::create_directories(dir / tool);
@@ -41,8 +44,8 @@ fs::path standInBin(const fs::path& dir) {
     const fs::path run = dir / "hvi-run" / "hvi-run";
     const fs::path assess = dir / "hvi-assess" / "hvi-assess";
     // hvi-run SCENE -o OUT ...: copies the scene as the "run file".
-    std::ofstream(run) << "#!/bin/sh\necho \"$1\" >> " << (dir / "runs.log").string()
-                       << "\ncp \"$1\" \"$3\"\n";
+    std::ofstream(run) << "#!/bin/sh\necho \"$1\" >> " << (dir / "runs.log").string() << "\nsleep "
+                       << runSeconds << "\ncp \"$1\" \"$3\"\n";
     // hvi-assess RUN -o OUT: P when t_rear < 0.8 V (both read from the scene).
     std::ofstream(assess)
         << "#!/bin/sh\n"
@@ -55,14 +58,26 @@ fs::path standInBin(const fs::path& dir) {
     return dir;
 }
 
+std::string makeCommand(const fs::path& bin, const fs::path& out, const std::string& speeds,
+                        const std::string& goal = "sweep") {
+    return "make -s -C " + sourcePath("workflows").string() + " -f sweep.mk " + goal +
+           " CASE=WPL-0341 PARAMETER=rear_wall SPEEDS='" + speeds +
+           "' TOLERANCE_MM=0.2 RESOLUTION=0.2 BIN=" + bin.string() + " OUT=" + out.string() +
+           " KEPT=" + (out.string() + ".kept") + " >>" + out.string() + ".log 2>&1";
+}
+
 int runMake(const fs::path& bin, const fs::path& out, const std::string& speeds,
             const std::string& goal = "sweep") {
-    const std::string command = "make -s -C " + sourcePath("workflows").string() + " -f sweep.mk " +
-                                goal + " CASE=WPL-0341 PARAMETER=rear_wall SPEEDS='" + speeds +
-                                "' TOLERANCE_MM=0.2 RESOLUTION=0.2 BIN=" + bin.string() +
-                                " OUT=" + out.string() + " KEPT=" + (out.string() + ".kept") +
-                                " >>" + out.string() + ".log 2>&1";
-    return std::system(command.c_str());
+    return std::system(makeCommand(bin, out, speeds, goal).c_str());
+}
+
+std::vector<std::string> lines(const fs::path& path) {
+    std::ifstream in(path);
+    std::vector<std::string> out;
+    for (std::string line; std::getline(in, line);) {
+        out.push_back(line);
+    }
+    return out;
 }
 
 } // namespace
@@ -156,4 +171,46 @@ TEST(HviSweepWorkflow, BracketsTheStandInLimitAndResumes) {
     ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readFileText(out.string() + ".log");
     EXPECT_EQ(countLines(bin / "runs.log"), runsKept) << "a kept speed was searched again";
     EXPECT_EQ(readFileText(out / "sweep.csv"), csv);
+}
+
+TEST(HviSweepWorkflow, AKilledMakeResumesWithoutRedoingFinishedRuns) {
+    // The same sweep twice: once straight through, once killed (the whole make, with its
+    // sub-makes and the run in progress, by SIGTERM to its process group) after a few runs and
+    // made again. The second ends with the same results and runs no finished point again:
+    // only the run the kill cut short may appear twice.
+    const fs::path root = tempPath("sweep_make_killed");
+    fs::remove_all(root);
+    const fs::path whole = root / "whole";
+    ASSERT_EQ(runMake(standInBin(root / "bin-whole"), whole, "6 7"), 0)
+        << readFileText(whole.string() + ".log");
+
+    const fs::path bin = standInBin(root / "bin", 0.3);
+    const fs::path out = root / "out";
+    const fs::path pidFile = root / "make.pid";
+    const std::string background =
+        "setsid sh -c \"" + makeCommand(bin, out, "6 7") + "\" & echo $! >" + pidFile.string();
+    ASSERT_EQ(std::system(background.c_str()), 0);
+    for (int i = 0; i < 300 && countLines(bin / "runs.log") < 3; ++i) {
+        std::system("sleep 0.05");
+    }
+    const pid_t pid = std::stoi(readFileText(pidFile));
+    ASSERT_EQ(::kill(-pid, SIGTERM), 0);
+    for (int i = 0; i < 300 && ::kill(-pid, 0) == 0; ++i) {
+        std::system("sleep 0.05");
+    }
+    const std::vector<std::string> before = lines(bin / "runs.log");
+    ASSERT_GE(before.size(), 3u);
+    EXPECT_FALSE(fs::exists(out / "sweep.csv")) << "the kill came after the sweep had ended";
+
+    ASSERT_EQ(runMake(bin, out, "6 7"), 0) << readFileText(out.string() + ".log");
+    EXPECT_EQ(readFileText(out / "sweep.csv"), readFileText(whole / "sweep.csv"));
+    const std::vector<std::string> after = lines(bin / "runs.log");
+    const std::vector<std::string> straight = lines(root / "bin-whole" / "runs.log");
+    EXPECT_LE(after.size(), straight.size() + 1);
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        for (std::size_t j = i + 1; j < after.size(); ++j) {
+            const bool cutShort = i + 1 == before.size() && j == before.size();
+            EXPECT_TRUE(after[i] != after[j] || cutShort) << "run again: " << after[i];
+        }
+    }
 }
