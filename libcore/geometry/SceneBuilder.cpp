@@ -253,6 +253,17 @@ std::vector<GeometryWarning> SceneBuilder::warnings() const {
                         m_numerics.particleSpacingMm);
     }
     checkResolution(out, "rear facesheet", m_frame.rearFacesheetMm, m_numerics.particleSpacingMm);
+    const double across = m_threat.diameterMm / m_numerics.particleSpacingMm;
+    if (across < kMinProjectileSpacings) {
+        out.push_back({WarningKind::UnderResolved,
+                       "projectile diameter " + num(m_threat.diameterMm) + " mm is " +
+                           num(std::round(10.0 * across) / 10.0) + " particle spacings across at " +
+                           num(m_numerics.particleSpacingMm) + " mm, fewer than " +
+                           num(kMinProjectileSpacings) +
+                           ": its energy and verdict are not to be trusted; resolving it needs a "
+                           "particle spacing <= " +
+                           num(m_threat.diameterMm / kMinProjectileSpacings) + " mm"});
+    }
     const double footprint = coneFootprintMm(m_threat, m_frame);
     if (m_domainRadius.value < footprint) {
         out.push_back({WarningKind::UnderResolved,

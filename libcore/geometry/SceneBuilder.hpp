@@ -116,6 +116,11 @@ inline constexpr double kMinDomainDiameters = 5.0;
 inline constexpr double kEndTimeCrossingFactor = 10.0;
 /// End time: margin for the rear wall's response [µs] (file comment).
 inline constexpr double kEndTimeMarginUs = 10.0;
+/// Fewest particle spacings across the projectile's diameter before the scene warns [-].
+/// Measured on two honeycomb panels swept at 0.08 mm (docs/notebook/sweep.md): spheres 3-5
+/// spacings across ended with energy errors of 2-11 %, 5-8.5 across 0.5-1.6 %, 9-14 across
+/// below 0.8 %; 10 leaves a margin. The source study's cases are 25-200 across.
+inline constexpr double kMinProjectileSpacings = 10.0;
 
 /// The domain-radius rule (file comment).
 RuleValue domainRadiusRule(const ThreatSpec& threat, const PanelFrame& frame);

@@ -161,6 +161,25 @@ TEST(SceneBuilder, WarnsAboutThinFacesheetsAndASmallDomain) {
     EXPECT_TRUE(calibrated.warnings().empty());
 }
 
+TEST(SceneBuilder, WarnsAboutAProjectileFewSpacingsAcross) {
+    SceneNumerics numerics;
+    numerics.particleSpacingMm = 0.4; // the 3.6 mm sphere is 9 spacings across
+    std::string all;
+    for (const auto& w : SceneBuilder(hitf04151Threat(), hitf04151Frame(), numerics).warnings()) {
+        all += w.message + "\n";
+    }
+    EXPECT_NE(all.find("projectile diameter 3.6 mm is 9 particle spacings across at 0.4 mm"),
+              std::string::npos)
+        << all;
+    EXPECT_NE(all.find("spacing <= 0.36 mm"), std::string::npos) << all;
+    numerics.particleSpacingMm = 0.36; // exactly 10 across: no warning about the projectile
+    all.clear();
+    for (const auto& w : SceneBuilder(hitf04151Threat(), hitf04151Frame(), numerics).warnings()) {
+        all += w.message + "\n";
+    }
+    EXPECT_EQ(all.find("projectile"), std::string::npos) << all;
+}
+
 TEST(SceneBuilder, RejectsNonPhysicalSizes) {
     ThreatSpec threat = hitf04151Threat();
     threat.diameterMm = std::nan("");
