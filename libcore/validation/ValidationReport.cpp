@@ -305,11 +305,9 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
     md << "\n\n";
 
     md << "## Cases\n\n"
-       << "| case | shield | d mm | V km/s | test | ours | grade | final | axis | fail r mm | BLE "
-          "| "
-          "d/d_c | run s | energy error | end µs "
-          "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-          "\n";
+       << "| case | shield | d mm | V km/s | test | ours | grade | final | axis | fail r mm | BLE |"
+          " d/d_c | run s | energy error | end µs |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& r : rows) {
         const Case& c = *r.c;
         md << "| " << c.id << " | " << toString(c.shield) << " | " << fmt("%.3g", c.diameterMm)
