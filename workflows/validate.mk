@@ -38,8 +38,10 @@ AFTER_VERDICT = @$(HVI_VALIDATE) progress --set $(SET) --out-dir $(OUT) --jobs $
 # run again.
 ARCHIVE ?= $(ROOT)/data/validation/verdicts/$(RESOLUTION)
 
-# The kept verdicts of the other spacings: the report's verdict-stability table.
-OTHER_KEPT := $(filter-out $(ARCHIVE) $(ROOT)/data/validation/verdicts/$(RESOLUTION),$(wildcard $(ROOT)/data/validation/verdicts/*))
+# The kept verdicts of the other spacings: the report's verdict-stability table, its columns
+# from coarse to fine (the spacings' names sorted, then reversed: 0.04 before 0.02).
+reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
+OTHER_KEPT := $(call reverse,$(sort $(filter-out $(ARCHIVE) $(ROOT)/data/validation/verdicts/$(RESOLUTION),$(wildcard $(ROOT)/data/validation/verdicts/*))))
 COMPARE_FLAGS := $(foreach d,$(OTHER_KEPT),--compare-kept $(d))
 
 .PHONY: validate validate-ble validate-keep validate-forget slurm-validate
