@@ -21,13 +21,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int countLines(const fs::path& path) {
+std::vector<std::string> lines(const fs::path& path) {
     std::ifstream in(path);
-    int n = 0;
+    std::vector<std::string> out;
     for (std::string line; std::getline(in, line);) {
-        ++n;
+        out.push_back(line);
     }
-    return n;
+    return out;
+}
+
+int countLines(const fs::path& path) {
+    return static_cast<int>(lines(path).size());
 }
 
 /// A BIN directory with the real scene writer and hvi-sweep, and a solver whose verdict is P
@@ -69,15 +73,6 @@ std::string makeCommand(const fs::path& bin, const fs::path& out, const std::str
 int runMake(const fs::path& bin, const fs::path& out, const std::string& speeds,
             const std::string& goal = "sweep") {
     return std::system(makeCommand(bin, out, speeds, goal).c_str());
-}
-
-std::vector<std::string> lines(const fs::path& path) {
-    std::ifstream in(path);
-    std::vector<std::string> out;
-    for (std::string line; std::getline(in, line);) {
-        out.push_back(line);
-    }
-    return out;
 }
 
 } // namespace
