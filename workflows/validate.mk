@@ -6,9 +6,14 @@ SET ?= quick
 RESOLUTION ?= 0.04
 THREADS ?= 1
 END_TIME_US ?=
+# VARIANT=NAME: a sensitivity study, the cases run with the material library
+# workflows/materials/NAME.json laid over the built-in one (e.g. spall-0.8: every aluminium
+# with a spall strength of 0.8 GPa), in their own OUT, kept apart (ARCHIVE below); the
+# report of the default library shows their verdicts beside its own.
+VARIANT ?=
 # One directory per spacing, shared by the sets: a case run for one set counts for all.
 # Relative OUT and REPORT are taken from the repository root (make -C changes directory).
-OUT ?= out/validate/$(RESOLUTION)
+OUT ?= out/validate$(if $(VARIANT),-$(VARIANT))/$(RESOLUTION)
 REPORT ?= $(OUT)/validation.md
 override OUT := $(if $(filter /%,$(OUT)),$(OUT),$(ROOT)/$(OUT))
 override REPORT := $(if $(filter /%,$(REPORT)),$(REPORT),$(ROOT)/$(REPORT))
@@ -19,10 +24,24 @@ CASES := $(shell $(HVI_VALIDATE) list --set $(SET) --interleave)
 ifeq ($(strip $(CASES)),)
 $(error hvi-validate listed no case for SET=$(SET): build the toolkit first (scripts/build.sh))
 endif
+# ONLY_CASES="ID ...": the cases of the set among these ids (a sensitivity study on quick
+# ones; not ONLY, which the extreme suite uses).
+ONLY_CASES ?=
+ifneq ($(strip $(ONLY_CASES)),)
+CASES := $(filter $(ONLY_CASES),$(CASES))
+ifeq ($(strip $(CASES)),)
+$(error none of ONLY_CASES="$(ONLY_CASES)" is a case of SET=$(SET) (hvi-validate list --set $(SET)))
+endif
+endif
 END_TIME_FLAG := $(if $(END_TIME_US),--end-time-us $(END_TIME_US))
 # MATERIALS=FILE: a material library laid over the built-in one (hvi-run --materials), for
 # sensitivity studies; give such runs their own OUT.
-MATERIALS ?=
+MATERIALS ?= $(if $(VARIANT),$(ROOT)/workflows/materials/$(VARIANT).json)
+ifneq ($(VARIANT),)
+ifeq ($(wildcard $(MATERIALS)),)
+$(error VARIANT=$(VARIANT): $(MATERIALS) does not exist (the variants: workflows/materials/*.json))
+endif
+endif
 MATERIALS_FLAG := $(if $(MATERIALS),--materials $(abspath $(MATERIALS)))
 
 # After each case: done, left and the time to go (hvi-validate progress), with the -j of this
@@ -36,13 +55,17 @@ AFTER_VERDICT = @$(HVI_VALIDATE) progress --set $(SET) --out-dir $(OUT) --jobs $
 # copies the verdicts of OUT there. They hold for the solver that made them (their
 # provenance names its version): after a change to the physics, `make validate-forget` and
 # run again.
-ARCHIVE ?= $(ROOT)/data/validation/verdicts/$(RESOLUTION)
+ARCHIVE ?= $(ROOT)/data/validation/$(if $(VARIANT),sensitivity/$(VARIANT),verdicts)/$(RESOLUTION)
 
 # The kept verdicts of the other spacings: the report's verdict-stability table, its columns
 # from coarse to fine (the spacings' names sorted, then reversed: 0.04 before 0.02).
 reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
 OTHER_KEPT := $(call reverse,$(sort $(filter-out $(ARCHIVE) $(ROOT)/data/validation/verdicts/$(RESOLUTION),$(wildcard $(ROOT)/data/validation/verdicts/*))))
-COMPARE_FLAGS := $(foreach d,$(OTHER_KEPT),--compare-kept $(d))
+# And the kept verdicts of the sensitivity studies at this spacing, in the default library's
+# report only.
+VARIANTS_KEPT := $(sort $(wildcard $(ROOT)/data/validation/sensitivity/*/$(RESOLUTION)))
+COMPARE_FLAGS := $(if $(VARIANT),,$(foreach d,$(OTHER_KEPT),--compare-kept $(d)) \
+  $(foreach d,$(VARIANTS_KEPT),--sensitivity-kept $(d)))
 
 .PHONY: validate validate-ble validate-keep validate-forget slurm-validate
 .SECONDARY:
@@ -77,7 +100,9 @@ slurm-validate:
 	$(call slurm_array,$(OUT)/slurm/validate.sbatch,hvi-validate,$(foreach \
 	  c,$(CASES),$(OUT)/$(c)/verdict.json),validate.mk,SET=$(SET) RESOLUTION=$(RESOLUTION) \
 	  BIN=$(BIN) OUT=$(OUT) REPORT=$(REPORT) ARCHIVE=$(ARCHIVE) $(if $(MATERIALS),MATERIALS=$(abspath \
-	  $(MATERIALS))) $(if $(END_TIME_US),END_TIME_US=$(END_TIME_US)),validate)
+	  $(MATERIALS))) $(if $(VARIANT),VARIANT=$(VARIANT)) $(if $(strip \
+	  $(ONLY_CASES)),ONLY_CASES="$(strip $(ONLY_CASES))") $(if \
+	  $(END_TIME_US),END_TIME_US=$(END_TIME_US)),validate)
 
 validate-forget:
 	rm -f $(foreach c,$(CASES),$(ARCHIVE)/$(c).json)

@@ -17,6 +17,21 @@ namespace hvi::app {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+/// A directory of kept verdicts given by a flag (`pointer`), without a trailing slash; an
+/// InputError naming the flag when it is none.
+fs::path keptDirectory(const std::string& dir, const char* pointer, const char* example) {
+    if (!fs::is_directory(dir)) {
+        throw InputError("<flags>", pointer, dir + " is no directory",
+                         std::string("a directory of kept verdicts, e.g. ") + example);
+    }
+    fs::path path(dir);
+    return path.filename().empty() ? path.parent_path() : path; // a trailing slash
+}
+
+} // namespace
+
 HviValidateTool::HviValidateTool()
     : tool::Tool("hvi-validate", "Validation cases (the source study's and the NASA development "
                                  "set): list them, write each one's tool inputs, and report "
@@ -37,6 +52,11 @@ void HviValidateTool::addOptions(CLI::App& app) {
                    "report: a directory of kept verdicts (<case>.json) at another spacing, named "
                    "by that spacing (data/validation/verdicts/0.04); repeatable: the "
                    "verdict-stability table");
+    app.add_option("--sensitivity-kept", m_sensitivityKept,
+                   "report: a directory of kept verdicts (<case>.json) at this spacing with "
+                   "another material library, named by the directory above it "
+                   "(data/validation/sensitivity/spall-0.8/0.08); repeatable: the sensitivity "
+                   "table");
     app.add_flag("--interleave", m_interleave,
                  "list: the shield types in turn (the run order of make validate)");
     app.add_option("--csv", m_csv, "convergence: also the table as CSV");
@@ -150,15 +170,13 @@ void HviValidateTool::execute() {
     options.selection = m_set;
     options.resolution = m_resolution;
     for (const auto& dir : m_compareKept) {
-        if (!fs::is_directory(dir)) {
-            throw InputError("<flags>", "/compare_kept", dir + " is no directory",
-                             "a directory of kept verdicts, e.g. data/validation/verdicts/0.04");
-        }
-        fs::path path(dir);
-        if (path.filename().empty()) { // a trailing slash
-            path = path.parent_path();
-        }
+        const fs::path path = keptDirectory(dir, "/compare_kept", "data/validation/verdicts/0.04");
         options.otherSpacings.emplace_back(path.filename().string(), path);
+    }
+    for (const auto& dir : m_sensitivityKept) {
+        const fs::path path =
+            keptDirectory(dir, "/sensitivity_kept", "data/validation/sensitivity/spall-0.8/0.08");
+        options.variants.emplace_back(path.parent_path().filename().string(), path);
     }
     const std::string text = validation::validationReport(cases, m_outDir, options);
     if (m_output == "-") {

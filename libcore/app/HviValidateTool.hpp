@@ -44,6 +44,7 @@ private:
     std::string m_output = "-";
     std::string m_resolution;
     std::vector<std::string> m_compareKept;
+    std::vector<std::string> m_sensitivityKept;
     int m_jobs = 1;
     bool m_interleave = false;
     std::string m_csv, m_plot, m_setup;

@@ -62,6 +62,7 @@ FeSolid::FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
     m_rates.resize(ne);
     m_elementForce.assign(8 * ne, 0.0);
     m_hourglassRate.assign(ne, 0.0);
+    m_ownStep.assign(ne, kNoLimit);
     m_volumetricRate.assign(ne, 0.0);
     m_volume.assign(ne, 0.0);
     m_erode.assign(ne, 0);
@@ -456,12 +457,14 @@ void FeSolid::elementForces(std::size_t i, StepVote& vote) {
     if (!el.alive[i] || m_erode[i]) {
         m_hourglassRate[i] = 0.0;
         std::fill_n(f, 8, 0.0);
+        m_ownStep[i] = kNoLimit;
         return;
     }
     const QuadState s = gather(m_nodes, el, i);
     const QuadGeometry g = quadGeometry(s);
     if (!(g.area > 0.0)) {
         std::fill_n(f, 8, 0.0); // eroded at the next update
+        m_ownStep[i] = kNoLimit;
         return;
     }
     const double volume = sweptVolume(g, axi);
@@ -492,8 +495,9 @@ void FeSolid::elementForces(std::size_t i, StepVote& vote) {
     const double c = el.cs[i];
     const double qSpeed = trace < 0.0 ? cq * lengthDt * std::fabs(trace) + cl * c : 0.0;
     const double denom = qSpeed + std::sqrt(qSpeed * qSpeed + c * c);
+    m_ownStep[i] = denom > 0.0 ? lengthDt / denom : kNoLimit;
     if (denom > 0.0) {
-        vote.offer(lengthDt / denom, static_cast<int32_t>(i));
+        vote.offer(m_ownStep[i], static_cast<int32_t>(i));
     }
 }
 
@@ -507,6 +511,10 @@ void FeSolid::finishAssembly(const std::vector<StepVote>& votes) {
     }
     m_stableDt = vote.dt;
     m_limitingElement = vote.element;
+    m_elementSteps.resize(m_evaluated.size());
+    for (std::size_t k = 0; k < m_evaluated.size(); ++k) {
+        m_elementSteps[k] = m_ownStep[static_cast<std::size_t>(m_evaluated[k])];
+    }
 
     // Gather the corner forces per node in a fixed (element) order.
     auto& nd = m_nodes;

@@ -94,6 +94,8 @@ public:
 
     /// Stable time step of the last update, before the Courant factor [us] (+inf: no element).
     double stableTimeStep() const { return m_stableDt; }
+    /// Each evaluated element's own vote in the last assembly [us] (+inf: none cast).
+    const std::vector<double>& elementSteps() const { return m_elementSteps; }
     int32_t limitingElement() const { return m_limitingElement; }
 
     NodeSet& nodes() { return m_nodes; }
@@ -169,8 +171,10 @@ private:
                       const material::MaterialPackage& materials);
     /// Element forces at the current geometry and state, gathered per node; the time-step vote.
     void assembleForces();
-    /// Element i's corner forces (zeros when it is eroded or about to be) and its vote.
+    /// Element i's corner forces (zeros when it is eroded or about to be) and its vote, kept
+    /// as its own step too (kNoLimit when it casts none).
     void elementForces(std::size_t i, StepVote& vote);
+    static constexpr double kNoLimit = std::numeric_limits<double>::infinity();
     void zeroForcesIfFull();
     /// The time step from the threads' votes, then each node's force from its elements'.
     void finishAssembly(const std::vector<StepVote>& votes);
@@ -188,6 +192,8 @@ private:
     std::vector<double> m_elementForce;     ///< 8 per element: (fz, fr) of corners 0..3
     std::vector<double> m_hourglassRate;    ///< c_hg per element [mg/us], set in update()
     std::vector<int32_t> m_evaluated;       ///< alive, non-dormant elements of this update
+    std::vector<double> m_elementSteps;     ///< their votes in the last assembly [us]
+    std::vector<double> m_ownStep;          ///< per element, its last vote [us]
     std::vector<int32_t> m_woken, m_merged; ///< scratch of selectEvaluated()
     bool m_erodedSinceSelection = false;    ///< the list holds eroded elements
     // The awake set only grows: an element wakes when one of its nodes first moves (or, at a

@@ -28,6 +28,7 @@ public:
 
     const char* name() const override { return "fe"; }
     double stableTimeStep() const override { return m_solid.stableTimeStep(); }
+    std::span<const double> pointSteps() const override { return m_solid.elementSteps(); }
     void kick(double dt) override { kickNodes(dt); }
     void drift(double dt) override;
     void evaluate(double dt) override { m_solid.update(dt, m_materials); }

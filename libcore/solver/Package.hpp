@@ -18,9 +18,11 @@
 #pragma once
 
 #include "io/Checkpoint.hpp"
+#include "solver/BinnedWork.hpp"
 #include "solver/Profile.hpp"
 
 #include <limits>
+#include <span>
 
 namespace hvi::solver {
 
@@ -32,6 +34,9 @@ public:
     virtual const char* name() const = 0;
     /// The largest stable step before the Courant factor [us]; +inf when it sets no limit.
     virtual double stableTimeStep() const { return std::numeric_limits<double>::infinity(); }
+    /// The stable step of each point its last evaluation evaluated [us] (+inf: no limit),
+    /// whose smallest is stableTimeStep(); empty for a package with no points of its own.
+    virtual std::span<const double> pointSteps() const { return {}; }
 
     virtual void kick(double /*dt*/) {}
     virtual void constrain(double /*dt*/) {}
@@ -53,13 +58,22 @@ public:
     double seconds() const { return m_times.total(); }
     const PhaseTimes& times() const { return m_times; }
     void book(Phase phase, double seconds) { m_times.book(phase, seconds); }
-    void resetTimes() { m_times = PhaseTimes{}; }
+    void resetTimes() {
+        m_times = PhaseTimes{};
+        m_binned = BinnedWork{};
+    }
+
+    /// Counts the points of its last evaluation as time-step bins would step them against
+    /// the step's smallest vote of all packages [us] (solver/BinnedWork.hpp).
+    void countBinnedWork(double smallestVote) { m_binned.add(pointSteps(), smallestVote); }
+    const BinnedWork& binnedWork() const { return m_binned; }
 
 protected:
     void bookSection(std::string_view name, double seconds) { m_times.bookSection(name, seconds); }
 
 private:
     PhaseTimes m_times;
+    BinnedWork m_binned;
 };
 
 } // namespace hvi::solver

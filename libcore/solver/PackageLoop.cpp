@@ -51,6 +51,22 @@ std::vector<std::pair<std::string, PhaseTimes>> PackageLoop::times() const {
     return out;
 }
 
+void PackageLoop::countBinnedWork(double smallestVote) {
+    for (Package* p : m_packages) {
+        p->countBinnedWork(smallestVote);
+    }
+}
+
+std::vector<std::pair<std::string, BinnedWork>> PackageLoop::binnedWork() const {
+    std::vector<std::pair<std::string, BinnedWork>> out;
+    for (const Package* p : m_packages) {
+        if (p->binnedWork().evaluated() > 0.0) {
+            out.emplace_back(p->name(), p->binnedWork());
+        }
+    }
+    return out;
+}
+
 void PackageLoop::resetTimes() {
     for (Package* p : m_packages) {
         p->resetTimes();

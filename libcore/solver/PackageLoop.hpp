@@ -38,6 +38,11 @@ public:
 
     /// Each package's wall time so far, by phase and section, in loop order.
     std::vector<std::pair<std::string, PhaseTimes>> times() const;
+    /// Every package counts its last evaluation's points as time-step bins would step them
+    /// against `smallestVote` [us]; and what each has counted so far, in loop order, for the
+    /// packages with points of their own.
+    void countBinnedWork(double smallestVote);
+    std::vector<std::pair<std::string, BinnedWork>> binnedWork() const;
     void resetTimes();
 
     void save(io::CheckpointState& state) const;

@@ -46,6 +46,17 @@ std::string phaseList(const PhaseTimes& times, double wall) {
     return out;
 }
 
+/// Per package: the point-evaluations made and what time-step bins would have made.
+nlohmann::json binnedJson(const std::vector<std::pair<std::string, BinnedWork>>& binned) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [name, work] : binned) {
+        out[name] = {{"evaluated_point_steps", work.evaluated()},
+                     {"binned_point_steps", work.binned()},
+                     {"fraction", work.fraction()}};
+    }
+    return out;
+}
+
 } // namespace
 
 void PhaseTimes::bookSection(std::string_view name, double seconds) {
@@ -123,7 +134,8 @@ nlohmann::json profileJson(const RunProfile& profile) {
               {"median", h.percentile(0.5)},
               {"p90", h.percentile(0.9)},
               {"max", h.max()}}},
-            {"dt_limiter_steps", h.limiterSteps()}};
+            {"dt_limiter_steps", h.limiterSteps()},
+            {"time_bins", binnedJson(profile.binned)}};
 }
 
 std::string profileText(const RunProfile& profile) {
@@ -162,6 +174,16 @@ std::string profileText(const RunProfile& profile) {
                 (first ? " " : ", ") + limiter +
                 format(" %.1f %%", 100.0 * static_cast<double>(n) / static_cast<double>(h.count()));
             first = false;
+        }
+    }
+    if (!profile.binned.empty()) {
+        out += "\ntime bins (each point at its own power-of-two step, up to " +
+               format("%.0f", std::ldexp(1.0, BinnedWork::kMaxBin)) +
+               " times the smallest) would evaluate";
+        const char* sep = " ";
+        for (const auto& [name, work] : profile.binned) {
+            out += sep + format("%.0f %% of ", 100.0 * work.fraction()) + name + "'s points";
+            sep = ", ";
         }
     }
     return out;

@@ -10,6 +10,8 @@
 // Units: wall time in s, steps in us.
 #pragma once
 
+#include "solver/BinnedWork.hpp"
+
 #include <array>
 #include <chrono>
 #include <cstddef>
@@ -81,6 +83,8 @@ struct RunProfile {
     std::vector<std::pair<std::string, PhaseTimes>> packages;
     std::vector<std::pair<std::string, double>> loop; ///< deletion, stop rules, output [s]
     StepSizeHistogram steps;
+    /// What time-step bins would have evaluated, per package with points of its own.
+    std::vector<std::pair<std::string, BinnedWork>> binned;
     double wallSeconds = 0.0; ///< the whole run, for the share of each part
 };
 

@@ -393,6 +393,7 @@ RunSummary runToCompletion(Simulation& sim, const std::string& sceneText,
         snapshot();
     }
     summary.profile.packages = sim.packageTimes();
+    summary.profile.binned = sim.binnedWork();
     summary.profile.loop = {{"deletion", sim.deletionSeconds()},
                             {"stop rules", sim.stopRuleSeconds()},
                             {"output", outputSeconds}};

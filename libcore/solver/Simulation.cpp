@@ -85,6 +85,7 @@ Simulation::PackageSeconds Simulation::packageSeconds() const {
 double Simulation::nextTimeStep() {
     const PackageLoop::Vote vote = m_loop.smallestVote();
     m_dtLimiter = vote.limiter->name();
+    m_loop.countBinnedWork(vote.dt);
     double dt = m_scene.run.cfl * vote.dt;
     if (!std::isfinite(dt)) {
         dt = m_scene.run.cfl * m_minSpacing; // nothing active: any step is stable

@@ -88,6 +88,10 @@ public:
     /// Each package's wall time so far by phase and section, in loop order (the run's
     /// profile, solver/Profile.hpp).
     std::vector<std::pair<std::string, PhaseTimes>> packageTimes() const { return m_loop.times(); }
+    /// What time-step bins would have evaluated, per package with points (BinnedWork.hpp).
+    std::vector<std::pair<std::string, BinnedWork>> binnedWork() const {
+        return m_loop.binnedWork();
+    }
     /// Wall time of the simulation's own work between steps [s]: deleting points, and the stop
     /// rules with the rear-wall confirmation they ask for.
     double deletionSeconds() const { return m_deletionSeconds; }

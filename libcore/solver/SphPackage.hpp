@@ -31,6 +31,7 @@ public:
 
     const char* name() const override { return "sph"; }
     double stableTimeStep() const override { return m_hydro.stableTimeStep(); }
+    std::span<const double> pointSteps() const override { return m_hydro.particleSteps(); }
     void kick(double dt) override;
     void drift(double dt) override;
     void evaluate(double dt) override;

@@ -292,7 +292,8 @@ int64_t longestRow(const NeighbourList& list) {
 /// the default path carries no per-pair test).
 template <class Kern, bool kArtificialStress>
 void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const HydroOptions& opt,
-                   const std::vector<PairData>& data, ParticleRates& rates, StepVote& vote) {
+                   const std::vector<PairData>& data, ParticleRates& rates, double* steps,
+                   StepVote& vote) {
     using Shape = typename Kern::ShapeType;
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
@@ -341,6 +342,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             storeRates(rates, static_cast<std::size_t>(i), sum, di, hoopRate,
                        pairwiseAtContrast(static_cast<std::size_t>(i)));
             const double dtI = particleStep(sum, di, count, coeff);
+            steps[a] = dtI;
             if (dtI < local.dt || (dtI == local.dt && i < local.particle)) {
                 local.dt = dtI;
                 local.particle = i;
@@ -413,12 +415,14 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, Partic
         d.volume = d.areaMass / ps.rho[i];
     }
     StepVote vote;
+    m_particleSteps.resize(list.active.size());
+    double* steps = m_particleSteps.data();
     withKernel(m_options.kernel, [&](auto kernel) {
         using Kern = decltype(kernel);
         if (m_options.artificialStress > 0.0) {
-            evaluatePairs<Kern, true>(ps, list, m_options, m_data, rates, vote);
+            evaluatePairs<Kern, true>(ps, list, m_options, m_data, rates, steps, vote);
         } else {
-            evaluatePairs<Kern, false>(ps, list, m_options, m_data, rates, vote);
+            evaluatePairs<Kern, false>(ps, list, m_options, m_data, rates, steps, vote);
         }
     });
     m_stableDt = vote.dt;

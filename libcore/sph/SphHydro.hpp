@@ -124,6 +124,9 @@ public:
     }
     /// The particle that set stableTimeStep() (for the progress line).
     int32_t limitingParticle() const { return m_limitingParticle; }
+    /// Each active particle's own vote in the last evaluate(), in the list's active order
+    /// [us] (+inf: it sets no limit); empty after a resume until the next evaluate().
+    const std::vector<double>& particleSteps() const { return m_particleSteps; }
 
     const HydroOptions& options() const { return m_options; }
 
@@ -132,6 +135,7 @@ private:
     double m_stableDt = 0.0;
     int32_t m_limitingParticle = -1;
     std::vector<PairData> m_data; ///< per particle, refreshed by every evaluate()
+    std::vector<double> m_particleSteps;
 };
 
 } // namespace hvi::sph

@@ -159,54 +159,127 @@ std::string verdictCell(const Row& r) {
     return cell;
 }
 
+using Kept = std::vector<std::pair<std::string, fs::path>>;
+
+/// A case's kept verdicts in each of `dirs` (<id>.json), beside this run's row.
+struct Beside {
+    const Row* row = nullptr;
+    std::vector<Row> kept;
+    bool any = false; ///< a verdict in one of the directories at least
+    bool same = true; ///< every kept verdict equals this run's (where both exist)
+};
+
+/// The rows with a kept verdict in at least one of `dirs`, in the rows' order.
+std::vector<Beside> besides(const std::vector<Row>& rows, const Kept& dirs) {
+    std::vector<Beside> out;
+    for (const auto& r : rows) {
+        Beside b;
+        b.row = &r;
+        for (const auto& [label, dir] : dirs) {
+            Row o;
+            o.c = r.c;
+            readVerdict(o, dir / (r.c->id + ".json"));
+            b.any |= o.ours.has_value();
+            b.same &= !o.ours || !r.ours || *o.ours == *r.ours;
+            b.kept.push_back(o);
+        }
+        if (b.any) {
+            out.push_back(std::move(b));
+        }
+    }
+    return out;
+}
+
+/// The side-by-side table: this run's column, then one per kept directory.
+std::string besideTable(const std::vector<Beside>& bs, const Kept& dirs,
+                        const std::string& thisColumn, const std::string& labelSuffix) {
+    std::ostringstream md;
+    md << "| case | shield | test | " << thisColumn;
+    for (const auto& [label, dir] : dirs) {
+        md << " | " << label << labelSuffix;
+    }
+    md << " |\n|---|---|---|---|";
+    for (std::size_t k = 0; k < dirs.size(); ++k) {
+        md << "---|";
+    }
+    md << "\n";
+    for (const auto& b : bs) {
+        const Case& c = *b.row->c;
+        md << "| " << c.id << " | " << toString(c.shield) << " | " << c.result << " | "
+           << verdictCell(*b.row);
+        for (const auto& o : b.kept) {
+            md << " | " << verdictCell(o);
+        }
+        md << " |\n";
+    }
+    return md.str();
+}
+
+/// How many of the cases with this run's verdict and a kept one keep it everywhere.
+std::pair<int, int> keptOfCompared(const std::vector<Beside>& bs) {
+    int compared = 0, kept = 0;
+    for (const auto& b : bs) {
+        if (b.row->ours) {
+            ++compared;
+            kept += b.same ? 1 : 0;
+        }
+    }
+    return {kept, compared};
+}
+
+std::string thisColumn(const ReportOptions& options) {
+    return options.resolution.empty() ? std::string("this run") : options.resolution + " mm";
+}
+
 /// The cases that have a verdict at another spacing too (ReportOptions::otherSpacings), side
 /// by side: a verdict that changes with the spacing measures the discretisation, not the
 /// shield.
 std::string stabilitySection(const std::vector<Row>& rows, const ReportOptions& options) {
-    std::ostringstream md;
-    int compared = 0, kept = 0;
-    std::ostringstream table;
-    for (const auto& r : rows) {
-        std::vector<Row> at;
-        bool any = false, same = true;
-        for (const auto& [label, dir] : options.otherSpacings) {
-            Row o;
-            o.c = r.c;
-            readVerdict(o, dir / (r.c->id + ".json"));
-            any |= o.ours.has_value();
-            same &= !o.ours || !r.ours || *o.ours == *r.ours;
-            at.push_back(o);
-        }
-        if (!any) {
-            continue;
-        }
-        if (r.ours) { // a verdict at two spacings or more
-            ++compared;
-            kept += same ? 1 : 0;
-        }
-        table << "| " << r.c->id << " | " << toString(r.c->shield) << " | " << r.c->result << " | "
-              << verdictCell(r);
-        for (const auto& o : at) {
-            table << " | " << verdictCell(o);
-        }
-        table << " |\n";
-    }
-    if (table.tellp() == 0) {
+    const auto bs = besides(rows, options.otherSpacings);
+    if (bs.empty()) {
         return {};
     }
+    const auto [kept, compared] = keptOfCompared(bs);
+    std::ostringstream md;
     md << "## Verdict stability over the spacing\n\n"
        << "The cases run at other spacings too (the kept verdicts of each): " << kept << " of the "
        << compared << " with verdicts at two spacings or more keep their verdict at every "
-       << "spacing run.\n\n| case | shield | test | "
-       << (options.resolution.empty() ? std::string("this run") : options.resolution + " mm");
-    for (const auto& [label, dir] : options.otherSpacings) {
-        md << " | " << label << " mm";
+       << "spacing run.\n\n"
+       << besideTable(bs, options.otherSpacings, thisColumn(options), " mm") << "\n";
+    return md.str();
+}
+
+/// The cases run with other material libraries too (ReportOptions::variants), side by side,
+/// with each variant's agreement with the tests beside this run's on the cases both ran: a
+/// verdict that moves within a constant's uncertainty is decided by that constant.
+std::string sensitivitySection(const std::vector<Row>& rows, const ReportOptions& options) {
+    const auto bs = besides(rows, options.variants);
+    if (bs.empty()) {
+        return {};
     }
-    md << " |\n|---|---|---|---|";
-    for (std::size_t k = 0; k < options.otherSpacings.size(); ++k) {
-        md << "---|";
+    const auto [kept, compared] = keptOfCompared(bs);
+    std::ostringstream md;
+    md << "## Sensitivity to material constants\n\n"
+       << "The cases run at the same spacing with a material library laid over the built-in "
+          "one (`workflows/materials/<variant>.json`, `make -C workflows validate "
+          "VARIANT=<variant>`): "
+       << kept << " of the " << compared << " run with both keep their verdict under every "
+       << "variant run. Agreement with the tests on the cases each variant ran, the built-in "
+          "library's beside it:";
+    const char* sep = " ";
+    for (std::size_t k = 0; k < options.variants.size(); ++k) {
+        Tally builtin, variant;
+        for (const auto& b : bs) {
+            if (b.row->ours && b.kept[k].ours) {
+                builtin.add(b.row->ours, b.row->c->result);
+                variant.add(b.kept[k].ours, b.row->c->result);
+            }
+        }
+        md << sep << "`" << options.variants[k].first << "` " << variant.text() << " (built-in "
+           << builtin.text() << ")";
+        sep = "; ";
     }
-    md << "\n" << table.str() << "\n";
+    md << ".\n\n" << besideTable(bs, options.variants, "built-in", "") << "\n";
     return md.str();
 }
 
@@ -323,7 +396,9 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
            << (r.endUs ? fmt("%.1f", *r.endUs) + (r.complete ? "" : " (partial)") : std::string(""))
            << " |\n";
     }
-    md << "\n" << stabilitySection(rows, options) << "## Assumptions\n\n";
+    md << "\n"
+       << stabilitySection(rows, options) << sensitivitySection(rows, options)
+       << "## Assumptions\n\n";
     for (const auto& c : cases) {
         for (const auto& a : c.assumptions) {
             md << "- " << c.id << ": " << a << "\n";

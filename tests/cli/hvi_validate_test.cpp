@@ -67,7 +67,7 @@ TEST(HviValidateCli, AnUnknownCaseIsOneLineAndNoOutput) {
     EXPECT_NE(set.err.find("/set"), std::string::npos) << set.err;
 }
 
-TEST(HviValidateCli, AMissingComparisonDirectoryIsOneLineAndNoReport) {
+TEST(HviValidateCli, AMissingKeptDirectoryIsOneLineAndNoReport) {
     const fs::path dir = tempPath("validate_compare");
     fs::remove_all(dir);
     fs::create_directories(dir);
@@ -80,6 +80,16 @@ TEST(HviValidateCli, AMissingComparisonDirectoryIsOneLineAndNoReport) {
     EXPECT_NE(r.err.find("/compare_kept: " + (dir / "0.04").string() + " is no directory"),
               std::string::npos)
         << r.err;
+    EXPECT_FALSE(fs::exists(report));
+    const fs::path variant = dir / "spall-0.8" / "0.08";
+    const auto s = runTool("hvi-validate", "report --set quick --out-dir " + dir.string() +
+                                               " --sensitivity-kept " + variant.string() + " -o " +
+                                               report.string());
+    EXPECT_EQ(s.exitCode, 2);
+    EXPECT_EQ(lineCount(s.err), 1) << s.err;
+    EXPECT_NE(s.err.find("/sensitivity_kept: " + variant.string() + " is no directory"),
+              std::string::npos)
+        << s.err;
     EXPECT_FALSE(fs::exists(report));
 }
 
@@ -149,4 +159,43 @@ TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
         << readFileText(out.string() + ".ble.log");
     EXPECT_NE(readFileText(out / "validation.md").find("Not run: 0 of 2"), std::string::npos);
     EXPECT_FALSE(fs::exists(out / "A1076" / "scene.json"));
+}
+
+// A sensitivity study's selection: VARIANT names a library of workflows/materials/ (an unknown
+// one is one make error naming the directory of the variants), ONLY_CASES the cases of the
+// set, and the run goes to the variant's own directory with the library given to hvi-run.
+TEST(HviValidateWorkflow, AVariantRunsTheChosenCasesWithItsLibrary) {
+    const fs::path out = tempPath("validate_variant");
+    fs::remove_all(out);
+    const std::string make =
+        "make -s -C " + sourcePath("workflows").string() +
+        " SET=quick RESOLUTION=0.1 BIN=" + toolPath("hvi-run").parent_path().parent_path().string();
+    const std::string log = out.string() + ".log";
+    EXPECT_NE(std::system((make + " VARIANT=no-such validate-ble >" + log + " 2>&1").c_str()), 0);
+    EXPECT_NE(readFileText(log).find("VARIANT=no-such: "), std::string::npos) << readFileText(log);
+    EXPECT_NE(readFileText(log).find("(the variants: workflows/materials/*.json)"),
+              std::string::npos)
+        << readFileText(log);
+    EXPECT_NE(std::system((make + " ONLY_CASES=NOPE validate-ble >" + log + " 2>&1").c_str()), 0);
+    EXPECT_NE(readFileText(log).find("none of ONLY_CASES=\"NOPE\" is a case of SET=quick"),
+              std::string::npos)
+        << readFileText(log);
+    // The dry run of the chosen case's run: its own directory, the variant's library.
+    const std::string dry = make + " -n VARIANT=spall-0.8 ONLY_CASES=A1076 OUT=" + out.string() +
+                            " " + (out / "A1076" / "run.h5").string() + " >" + log + " 2>&1";
+    ASSERT_EQ(std::system(dry.c_str()), 0) << readFileText(log);
+    EXPECT_NE(readFileText(log).find("--materials " +
+                                     sourcePath("workflows/materials/spall-0.8.json").string()),
+              std::string::npos)
+        << readFileText(log);
+    // The report of the variant covers only the chosen case.
+    ASSERT_EQ(std::system((make + " VARIANT=spall-0.8 ONLY_CASES=A1076 OUT=" + out.string() +
+                           " validate-ble >" + log + " 2>&1")
+                              .c_str()),
+              0)
+        << readFileText(log);
+    EXPECT_TRUE(fs::exists(out / "A1076" / "ble.json"));
+    EXPECT_FALSE(fs::exists(out / "A1077"));
+    EXPECT_NE(readFileText(log).find("validate-ble: 1 cases"), std::string::npos)
+        << readFileText(log);
 }

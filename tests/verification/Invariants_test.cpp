@@ -5,14 +5,17 @@
 // and conservation within tolerances: total z-momentum (every axial force is a pair force,
 // antisymmetric, mirror pairs included, except the area-weighted axial sums of the particles
 // next to the axis) and total energy (compatible energy equation; leapfrog truncation error
-// and the unbooked work of those axial sums).
+// and the unbooked work of those axial sums). And the count of what time-step bins would
+// evaluate covers every evaluated particle and element, with each element's own vote.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "core/Parallel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
+#include <limits>
 #include <omp.h>
 
 using namespace hvi;
@@ -138,6 +141,13 @@ namespace {
 struct ContactOutcome {
     std::vector<double> z, vz, e, nodeZ, nodeVz;
     std::size_t contacts = 0;
+    /// Points each package evaluated: before the first step, then after each step.
+    std::vector<double> sphEvaluated, feEvaluated;
+    /// The smallest element vote over the FE package's vote (>= 1: that vote also takes the
+    /// undisturbed elements' step), the least over the steps.
+    double feSmallestStepRatio = std::numeric_limits<double>::infinity();
+    std::vector<double> feSmallestSteps; ///< the smallest element vote of each assembly [us]
+    std::vector<std::pair<std::string, solver::BinnedWork>> binned;
 };
 
 ContactOutcome runContact(bool skipDormant) {
@@ -163,9 +173,24 @@ ContactOutcome runContact(bool skipDormant) {
     options.skipDormant = skipDormant;
     solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"), options);
     ContactOutcome out;
+    auto count = [&](const solver::Simulation& s) {
+        out.sphEvaluated.push_back(static_cast<double>(s.activeCount()));
+        // The elements of the last assembly (contact may admit more before the next update).
+        const auto& steps = s.finiteElements()->elementSteps();
+        out.feEvaluated.push_back(static_cast<double>(steps.size()));
+        if (!steps.empty()) {
+            const double smallest = *std::min_element(steps.begin(), steps.end());
+            out.feSmallestStepRatio =
+                std::min(out.feSmallestStepRatio, smallest / s.finiteElements()->stableTimeStep());
+            out.feSmallestSteps.push_back(smallest);
+        }
+    };
+    count(sim);
     test::runUntil(sim, 0.05, [&](const solver::Simulation& s) {
         out.contacts += s.contact()->contactCount();
+        count(s);
     });
+    out.binned = sim.binnedWork();
     out.z = sim.particles().z;
     out.vz = sim.particles().vz;
     out.e = sim.particles().e;
@@ -175,6 +200,40 @@ ContactOutcome runContact(bool skipDormant) {
 }
 
 } // namespace
+
+// Time-step bins' count (solver/BinnedWork.hpp): each step's vote counts the points of the
+// evaluation before it, every one of them (the evaluation that ends the run casts no vote),
+// and bins can only take fewer evaluations, not more.
+TEST(Invariants, TimeBinsCountEveryEvaluatedPoint) {
+    const ContactOutcome o = runContact(true);
+    ASSERT_EQ(o.binned.size(), 2u);
+    auto allButLast = [](const std::vector<double>& v) {
+        double sum = 0.0;
+        for (std::size_t k = 0; k + 1 < v.size(); ++k) {
+            sum += v[k];
+        }
+        return sum;
+    };
+    for (const auto& [name, work] : o.binned) {
+        const double expected = allButLast(name == "sph" ? o.sphEvaluated : o.feEvaluated);
+        EXPECT_EQ(work.evaluated(), expected) << name;
+        EXPECT_GT(work.fraction(), 0.0) << name;
+        EXPECT_LE(work.fraction(), 1.0) << name;
+        std::printf("%s: %.0f point-steps evaluated, %.1f with time bins (%.3f)\n", name.c_str(),
+                    work.evaluated(), work.binned(), work.fraction());
+    }
+    EXPECT_EQ(o.binned[0].first, "sph");
+    EXPECT_EQ(o.binned[1].first, "fe");
+    // The elements' own votes are the ones the package's vote is the smallest of, and they
+    // are each assembly's: the impact compresses the block's front elements, whose votes fall
+    // below the undisturbed elements' of the first assembly.
+    EXPECT_GE(o.feSmallestStepRatio, 1.0);
+    EXPECT_LT(o.feSmallestStepRatio, 1.0 + 1e-12);
+    ASSERT_FALSE(o.feSmallestSteps.empty());
+    const double first = o.feSmallestSteps.front();
+    const double least = *std::min_element(o.feSmallestSteps.begin(), o.feSmallestSteps.end());
+    EXPECT_LT(least, 0.99 * first) << "first " << first << " us, least " << least << " us";
+}
 
 TEST(Invariants, DormantSkippingIsExactThroughContact) {
     const ContactOutcome skip = runContact(true);

@@ -71,8 +71,15 @@ TEST(Profile, TextAndJsonSayTheSame) {
     p.wallSeconds = 10.0;
     p.steps.add(1e-3, "sph");
     p.steps.add(2e-3, "contact");
+    BinnedWork sphBins;
+    const std::vector<double> steps{1e-3, 4e-3}; // bins 0 and 2: 1.25 of 2 evaluations
+    sphBins.add(steps, 1e-3);
+    p.binned = {{"sph", sphBins}};
 
     const auto json = profileJson(p);
+    EXPECT_DOUBLE_EQ(json["time_bins"]["sph"]["evaluated_point_steps"].get<double>(), 2.0);
+    EXPECT_DOUBLE_EQ(json["time_bins"]["sph"]["binned_point_steps"].get<double>(), 1.25);
+    EXPECT_DOUBLE_EQ(json["time_bins"]["sph"]["fraction"].get<double>(), 0.625);
     EXPECT_DOUBLE_EQ(json["packages"]["sph"]["total_s"].get<double>(), 6.0);
     EXPECT_DOUBLE_EQ(json["packages"]["sph"]["phases_s"]["evaluate"].get<double>(), 6.0);
     EXPECT_DOUBLE_EQ(json["packages"]["sph"]["sections_s"]["neighbour search"].get<double>(), 1.0);
@@ -88,4 +95,5 @@ TEST(Profile, TextAndJsonSayTheSame) {
     // 10 s less 6 + 2 + 1 accounted: 1 s the profile cannot place.
     EXPECT_NE(text.find("other              1.0 s  10.0 %"), std::string::npos) << text;
     EXPECT_NE(text.find("set by contact 50.0 %, sph 50.0 %"), std::string::npos) << text;
+    EXPECT_NE(text.find("would evaluate 62 % of sph's points"), std::string::npos) << text;
 }

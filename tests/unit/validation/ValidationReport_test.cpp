@@ -44,7 +44,7 @@ TEST(ValidationReport, CountsAgreementPerShieldAndTheConfusionMatrix) {
     fs::create_directories(out / "A1077");
     std::ofstream(out / "A1077" / "ble.json")
         << R"({"performance": {"verdict": "NP", "critical_over_projectile_diameter": 1.25}})";
-    const std::string md = validation::validationReport(cases, out, {"quick", "0.04", {}});
+    const std::string md = validation::validationReport(cases, out, {"quick", "0.04", {}, {}});
     EXPECT_NE(md.find("| source_study foam | 2 | 1/2 (50 %) | 1/2 (50 %) | 1/2 (50 %) |"),
               std::string::npos)
         << md;
@@ -83,7 +83,7 @@ TEST(ValidationReport, MarksTheWallTimeOfARunTimedByItsLastPartOnly) {
     withRun("HITF03147-2", {{"resumed", true}, {"wall_time_s", 10.0}}); // an older build
     withRun("HITF03147-3",
             {{"resumed", true}, {"earlier_wall_time_s", 6.0}, {"this_wall_time_s", 4.0}});
-    const std::string md = validation::validationReport(cases, out, {"quick", "0.04", {}});
+    const std::string md = validation::validationReport(cases, out, {"quick", "0.04", {}, {}});
     EXPECT_NE(md.find("| HITF03147-2 | foam | 1.1 | 6.69 | NP | NP |"), std::string::npos) << md;
     EXPECT_NE(md.find(" | ≥10 | "), std::string::npos) << md;
     EXPECT_EQ(md.find(" | ≥10 | ", md.find(" | ≥10 | ") + 1), std::string::npos) << md;
@@ -111,7 +111,7 @@ TEST(ValidationReport, TabulatesTheVerdictsKeptAtOtherSpacings) {
     // A1077 only at 0.04 mm: listed, but not counted as kept or changed.
     writeCase(out / "k" / "c", "NP", false, 0.8);
     fs::rename(out / "k" / "c" / "verdict.json", out / "0.04" / "A1077.json");
-    validation::ReportOptions options{"quick", "0.08", {}};
+    validation::ReportOptions options{"quick", "0.08", {}, {}};
     options.otherSpacings = {{"0.04", out / "0.04"}};
     const std::string md = validation::validationReport(cases, out / "run", options);
     EXPECT_NE(md.find("1 of the 2 with verdicts at two spacings or more keep their verdict"),
@@ -129,7 +129,56 @@ TEST(ValidationReport, TabulatesTheVerdictsKeptAtOtherSpacings) {
     EXPECT_NE(md.find("| A1077 | whipple | NP | – | NP, perforation, 10 s |"), std::string::npos)
         << md;
     // Without kept verdicts elsewhere there is no table.
-    EXPECT_EQ(validation::validationReport(cases, out / "run", {"quick", "0.08", {}})
+    EXPECT_EQ(validation::validationReport(cases, out / "run", {"quick", "0.08", {}, {}})
                   .find("Verdict stability"),
+              std::string::npos);
+}
+
+// The sensitivity table: the cases that have a kept verdict with another material library,
+// side by side, how many keep their verdict under every variant, and each variant's agreement
+// with the tests beside the built-in library's on the cases that variant ran.
+TEST(ValidationReport, TabulatesTheVerdictsOfEachMaterialVariant) {
+    const auto cases = validation::selectCases("quick"); // -2 NP, -3 P, A1076 P, A1077 NP
+    const fs::path out = test::tempPath("validation_report_sensitivity");
+    fs::remove_all(out);
+    writeCase(out / "run" / "HITF03147-2", "P", false, 1.2); // a false alarm
+    writeCase(out / "run" / "HITF03147-3", "P", false, 1.3);
+    writeCase(out / "run" / "A1076", "P", false, 1.8); // no variant ran it: left out
+    auto keep = [&](const std::string& variant, const std::string& id, const std::string& v) {
+        writeCase(out / "k" / variant / id, v, false, 1.0);
+        fs::create_directories(out / variant / "0.08");
+        fs::rename(out / "k" / variant / id / "verdict.json",
+                   out / variant / "0.08" / (id + ".json"));
+    };
+    keep("spall-2.4", "HITF03147-2", "NP"); // moves, and agrees with the test
+    keep("spall-2.4", "HITF03147-3", "P");
+    keep("spall-0.8", "HITF03147-2", "P"); // -3 not run with it
+    validation::ReportOptions options{"quick", "0.08", {}, {}};
+    options.variants = {{"spall-0.8", out / "spall-0.8" / "0.08"},
+                        {"spall-2.4", out / "spall-2.4" / "0.08"}};
+    const std::string md = validation::validationReport(cases, out / "run", options);
+    EXPECT_NE(md.find("## Sensitivity to material constants"), std::string::npos) << md;
+    EXPECT_NE(md.find("1 of the 2 run with both keep their verdict under every variant run"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("`spall-0.8` 0/1 (0 %) (built-in 0/1 (0 %)); `spall-2.4` 2/2 (100 %) "
+                      "(built-in 1/2 (50 %))."),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| case | shield | test | built-in | spall-0.8 | spall-2.4 |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| HITF03147-2 | foam | NP | P, perforation, 10 s | P, perforation, 10 s "
+                      "| NP, perforation, 10 s |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| HITF03147-3 | foam | P | P, perforation, 10 s | – | P, perforation, "
+                      "10 s |"),
+              std::string::npos)
+        << md;
+    EXPECT_EQ(md.find("| A1076 | whipple | P | P"), std::string::npos) << md;
+    // Without kept variants there is no section.
+    EXPECT_EQ(validation::validationReport(cases, out / "run", {"quick", "0.08", {}, {}})
+                  .find("Sensitivity to material"),
               std::string::npos);
 }
