@@ -279,7 +279,16 @@ std::string sensitivitySection(const std::vector<Row>& rows, const ReportOptions
            << builtin.text() << ")";
         sep = "; ";
     }
-    md << ".\n\n" << besideTable(bs, options.variants, "built-in", "") << "\n";
+    md << ".";
+    sep = " Verdicts that move: ";
+    for (const auto& b : bs) {
+        if (b.row->ours && !b.same) {
+            md << sep << b.row->c->id;
+            sep = ", ";
+        }
+    }
+    md << (kept == compared ? " No verdict moves." : ".") << "\n\n"
+       << besideTable(bs, options.variants, "built-in", "") << "\n";
     return md.str();
 }
 

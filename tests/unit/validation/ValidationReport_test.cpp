@@ -162,7 +162,7 @@ TEST(ValidationReport, TabulatesTheVerdictsOfEachMaterialVariant) {
               std::string::npos)
         << md;
     EXPECT_NE(md.find("`spall-0.8` 0/1 (0 %) (built-in 0/1 (0 %)); `spall-2.4` 2/2 (100 %) "
-                      "(built-in 1/2 (50 %))."),
+                      "(built-in 1/2 (50 %)). Verdicts that move: HITF03147-2.\n"),
               std::string::npos)
         << md;
     EXPECT_NE(md.find("| case | shield | test | built-in | spall-0.8 | spall-2.4 |"),
@@ -177,6 +177,11 @@ TEST(ValidationReport, TabulatesTheVerdictsOfEachMaterialVariant) {
               std::string::npos)
         << md;
     EXPECT_EQ(md.find("| A1076 | whipple | P | P"), std::string::npos) << md;
+    // With spall-0.8 alone nothing moves.
+    options.variants.pop_back();
+    EXPECT_NE(validation::validationReport(cases, out / "run", options)
+                  .find("(built-in 0/1 (0 %)). No verdict moves.\n"),
+              std::string::npos);
     // Without kept variants there is no section.
     EXPECT_EQ(validation::validationReport(cases, out / "run", {"quick", "0.08", {}, {}})
                   .find("Sensitivity to material"),
