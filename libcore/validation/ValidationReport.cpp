@@ -165,7 +165,6 @@ using Kept = std::vector<std::pair<std::string, fs::path>>;
 struct Beside {
     const Row* row = nullptr;
     std::vector<Row> kept;
-    bool any = false; ///< a verdict in one of the directories at least
     bool same = true; ///< every kept verdict equals this run's (where both exist)
 };
 
@@ -175,15 +174,16 @@ std::vector<Beside> besides(const std::vector<Row>& rows, const Kept& dirs) {
     for (const auto& r : rows) {
         Beside b;
         b.row = &r;
+        bool any = false; // a verdict in one of the directories at least
         for (const auto& [label, dir] : dirs) {
             Row o;
             o.c = r.c;
             readVerdict(o, dir / (r.c->id + ".json"));
-            b.any |= o.ours.has_value();
+            any |= o.ours.has_value();
             b.same &= !o.ours || !r.ours || *o.ours == *r.ours;
             b.kept.push_back(o);
         }
-        if (b.any) {
+        if (any) {
             out.push_back(std::move(b));
         }
     }
