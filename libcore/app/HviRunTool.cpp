@@ -31,6 +31,22 @@ extern "C" void onSignal(int) {
     solver::g_stopRequested.store(true);
 }
 
+/// The wall time booked so far to a named section of a package's phases [s] (0 if none).
+double sectionSeconds(const solver::Simulation& sim, std::string_view package,
+                      std::string_view section) {
+    for (const auto& [name, times] : sim.packageTimes()) {
+        if (name != package) {
+            continue;
+        }
+        for (const auto& [part, seconds] : times.sections()) {
+            if (part == section) {
+                return seconds;
+            }
+        }
+    }
+    return 0.0;
+}
+
 /// The run file's name: -o, or the scene's with .h5. A scene read from stdin has no name to
 /// put the run file beside.
 std::string runFileName(const std::string& scene, const std::string& output) {
@@ -144,13 +160,17 @@ void HviRunTool::benchmark() {
             sim.advance();
         }
         double particleSteps = 0.0, activeSteps = 0.0, pairs = 0.0, elementSteps = 0.0;
+        double insidePairs = 0.0, computedPairs = 0.0;
         const auto before = sim.packageSeconds();
+        const double pairSecondsBefore = sectionSeconds(sim, "sph", "pair loops");
         const auto t0 = std::chrono::steady_clock::now();
         for (long k = 0; k < m_benchmarkSteps; ++k) {
             sim.advance();
             particleSteps += static_cast<double>(sim.aliveCount());
             activeSteps += static_cast<double>(sim.activeCount());
             pairs += static_cast<double>(sim.pairCount());
+            insidePairs += static_cast<double>(sim.evaluatedPairs().inside);
+            computedPairs += static_cast<double>(sim.evaluatedPairs().computed);
             if (sim.finiteElements()) {
                 elementSteps += static_cast<double>(sim.finiteElements()->evaluatedCount());
             }
@@ -158,7 +178,8 @@ void HviRunTool::benchmark() {
         const double wall =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const auto after = sim.packageSeconds();
-        char line[768];
+        const double pairSeconds = sectionSeconds(sim, "sph", "pair loops") - pairSecondsBefore;
+        char line[1024];
         if (!feBumper) {
             std::snprintf(
                 line, sizeof line,
@@ -166,12 +187,19 @@ void HviRunTool::benchmark() {
                 "in %.2f s (setup %.2f s)\n"
                 "  particle-steps/s (all particles):    %.3e\n"
                 "  particle-steps/s (active particles): %.3e  (%.0f %% of particles active)\n"
-                "  neighbour pairs per active particle: %.1f\n"
+                "  neighbour pairs per active particle: %.1f listed, %.1f inside the support, "
+                "%.1f computed (padded to the vector lanes)\n"
+                "  pair loops: %.2f s (%.0f %% of the steps), %.3e computed pairs/s, %.1f "
+                "GFLOP/s at %.0f flops a pair\n"
                 "  simulated %.4f us, mean dt %.3e us, energy error %+.2e\n",
                 spacing, sim.particles().size(), omp_get_max_threads(), m_benchmarkSteps, wall,
                 setup, particleSteps / wall, activeSteps / wall,
                 100.0 * activeSteps / std::max(particleSteps, 1.0),
-                pairs / std::max(activeSteps, 1.0), sim.time(),
+                pairs / std::max(activeSteps, 1.0), insidePairs / std::max(activeSteps, 1.0),
+                computedPairs / std::max(activeSteps, 1.0), pairSeconds,
+                100.0 * pairSeconds / wall, computedPairs / std::max(pairSeconds, 1e-12),
+                computedPairs * sph::kPairFlops / std::max(pairSeconds, 1e-12) / 1e9,
+                sph::kPairFlops, sim.time(),
                 sim.time() / static_cast<double>(sim.step()), sim.energyError());
         } else {
             const double feSeconds = after.fe - before.fe;

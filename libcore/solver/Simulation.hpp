@@ -70,6 +70,8 @@ public:
     /// The SPH package's time-step vote before the Courant factor [us].
     double sphStableTimeStep() const { return m_sph->stableTimeStep(); }
     std::size_t pairCount() const { return m_sph->neighbours().pairCount(); }
+    /// The SPH pairs of the last evaluation: inside the support, and computed.
+    const sph::PairCounts& evaluatedPairs() const { return m_sph->pairCounts(); }
     /// The FE solid, null in a scene without FE bodies.
     const fe::FeSolid* finiteElements() const { return m_fe ? &m_fe->solid() : nullptr; }
     fe::FeSolid* finiteElements() { return m_fe ? &m_fe->solid() : nullptr; }

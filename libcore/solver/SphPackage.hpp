@@ -44,6 +44,8 @@ public:
     /// The particle whose stability limit set the last vote (-1 if none).
     int32_t limitingParticle() const { return m_hydro.limitingParticle(); }
     const sph::NeighbourList& neighbours() const { return m_neighbours; }
+    /// The pairs of the last evaluation (inside the support; computed, with the padding).
+    const sph::PairCounts& pairCounts() const { return m_hydro.pairCounts(); }
     const material::MaterialPackage& materials() const { return m_materials; }
 
 private:

@@ -67,6 +67,22 @@ struct CubicSplineKernel {
         }
         return 0.0;
     }
+    /// f(q) and f'(q)/q without a branch, for 0 <= q < 2 (a pair inside the support): both
+    /// pieces are computed and a select keeps one, so a vectorised pair loop needs no masked
+    /// division (AVX2 has none). At q = 0 the unused outer piece of f'(q)/q is infinite and
+    /// dropped by the select.
+    static double shapeInSupport(double q) noexcept {
+        const double t = 2.0 - q;
+        const double inner = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+        const double outer = 0.25 * t * t * t;
+        return q < 1.0 ? inner : outer;
+    }
+    static double shapeDerivOverQInSupport(double q) noexcept {
+        const double t = 2.0 - q;
+        const double inner = -3.0 + 2.25 * q;
+        const double outer = -0.75 * t * t / q;
+        return q < 1.0 ? inner : outer;
+    }
     /// f'(q).
     static double shapeDeriv(double q) noexcept {
         if (q < 1.0) {
@@ -100,6 +116,16 @@ struct WendlandC2Kernel {
         const double t = 1.0 - 0.5 * q;
         return -5.0 * t * t * t;
     }
+    /// The same without the support test, for 0 <= q < 2 (CubicSplineKernel says why).
+    static double shapeInSupport(double q) noexcept {
+        const double t = 1.0 - 0.5 * q;
+        const double t2 = t * t;
+        return t2 * t2 * (1.0 + 2.0 * q);
+    }
+    static double shapeDerivOverQInSupport(double q) noexcept {
+        const double t = 1.0 - 0.5 * q;
+        return -5.0 * t * t * t;
+    }
     static double shapeDeriv(double q) noexcept { return q * shapeDerivOverQ(q); }
 };
 
@@ -120,6 +146,17 @@ struct WendlandC4Kernel {
         if (q >= 2.0) {
             return 0.0;
         }
+        const double t = 1.0 - 0.5 * q;
+        const double t2 = t * t;
+        return -(14.0 / 3.0) * t2 * t2 * t * (1.0 + 2.5 * q);
+    }
+    /// The same without the support test, for 0 <= q < 2 (CubicSplineKernel says why).
+    static double shapeInSupport(double q) noexcept {
+        const double t = 1.0 - 0.5 * q;
+        const double t2 = t * t;
+        return t2 * t2 * t2 * (1.0 + 3.0 * q + (35.0 / 12.0) * q * q);
+    }
+    static double shapeDerivOverQInSupport(double q) noexcept {
         const double t = 1.0 - 0.5 * q;
         const double t2 = t * t;
         return -(14.0 / 3.0) * t2 * t2 * t * (1.0 + 2.5 * q);

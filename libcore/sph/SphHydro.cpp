@@ -25,6 +25,9 @@ struct StepVote {
     int32_t particle = -1;
 };
 
+/// The vectorised loop's lanes: four doubles of a 256-bit vector (AVX2).
+constexpr std::size_t kPairLanes = 4;
+
 // The pair loop is split into steps that the compiler inlines into one loop body (so the
 // sums, their order and their floating-point contraction are those of a single function).
 #define HVI_INLINE [[gnu::always_inline]] inline
@@ -51,115 +54,197 @@ struct PairSums {
     bool contrast = false;       // a neighbour's density differs by more than kDensityContrast
 };
 
-/// Pass 1: keeps the listed candidates of row `row` inside the support of particle `di` (the
+/// A particle's neighbours inside its support: the particle each stands for and its sign (-1:
+/// the mirror image across the axis), contiguous for the vectorised loop. The index is 64-bit
+/// so that every array of the loop has the doubles' width: with a 32-bit index GCC takes
+/// eight lanes (the int32 width of a 256-bit vector) and runs the last four pairs of a
+/// particle in its scalar epilogue.
+struct InsideNeighbours {
+    std::vector<int64_t> source;
+    std::vector<double> sign;
+    explicit InsideNeighbours(std::size_t capacity)
+        : source(capacity + kPairLanes), sign(capacity + kPairLanes) {}
+};
+
+/// Pass 1: keeps the listed candidates of row `row` inside the support of particle `i` (the
 /// list reaches a Verlet skin further) in `inside`; returns their count. Branch-free,
-/// order-preserving compaction.
-HVI_INLINE std::size_t keepInside(const NeighbourList& list, int32_t row, const PairData& di,
-                                  const PairData* pd, std::vector<int32_t>& inside) {
+/// order-preserving compaction. The list is then padded to a multiple of kPairLanes with the
+/// particle itself, a pair whose every term is zero (no separation and no relative velocity),
+/// so the vectorised loop needs no scalar remainder.
+HVI_INLINE std::size_t keepInside(const NeighbourList& list, int32_t row, int32_t i,
+                                  const PairData* pd, InsideNeighbours& inside) {
     const auto* src = list.source.data();
     const auto* sgn = list.sign.data();
     const auto* nb = list.neighbours.data();
+    const PairData& di = pd[i];
     const int64_t k0 = list.offset[row], k1 = list.offset[row + 1];
     std::size_t count = 0;
     for (int64_t k = k0; k < k1; ++k) {
         const int32_t j = nb[k];
-        const PairData& dj = pd[src[j]];
+        const int32_t sj = src[j];
+        const PairData& dj = pd[sj];
         const double dz = di.z - dj.z;
         const double dr = di.r - sgn[j] * dj.r;
         const double support = kKernelSupport * 0.5 * (di.h + dj.h);
-        inside[count] = j;
+        inside.source[count] = static_cast<int64_t>(sj);
+        inside.sign[count] = sgn[j];
         count += (dz * dz + dr * dr < support * support) ? 1 : 0;
+    }
+    for (std::size_t k = count; k % kPairLanes != 0; ++k) {
+        inside.source[k] = i;
+        inside.sign[k] = 1.0;
     }
     return count;
 }
 
-/// Pass 2, one pair (i, j) with j mirrored when sg = -1. Each particle's own stress acts over
-/// its own circumference and the neighbour's over the neighbour's: the pair force
+/// Pass 2: the pair sums of particle i over the `padded` entries of `inside` (each mirrored
+/// when its sign is -1). Each particle's own stress acts over its own circumference and the
+/// neighbour's over the neighbour's: the pair force
 /// m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) . grad W is antisymmetric (z-momentum is exact)
 /// and its axial part is the area-weighted, consistent one even at the axis.
 /// `ownPerMass`: w_own / m_j = 1 / (2 pi r_i) (planar: 1).
-template <class Shape, bool kArtificialStress>
-HVI_INLINE void addPair(PairSums& sum, const PairData& di, const PairData& dj, double sg,
-                        double ownPerMass, bool axi, bool mirrored, const PairCoefficients& c) {
-    const double dz = di.z - dj.z;
-    const double dr = di.r - sg * dj.r;
-    const double hij = 0.5 * (di.h + dj.h);
-    const double dist2 = dz * dz + dr * dr;
-    const double invH = 1.0 / hij;
-    const double invH2 = invH * invH;
-    const double q = std::sqrt(dist2) * invH;
-    // grad W = kNorm f'(q)/q / h^4 * x_ij (Kernel.hpp), without the divisions.
-    const double gor = Shape::kNorm * Shape::shapeDerivOverQ(q) * invH2 * invH2;
-    const double wz = gor * dz, wr = gor * dr; // grad_i W_ij
-    const double mj = dj.mass;
-    const double areaMass = dj.areaMass;          // m_j / (2 pi r_j)
-    const double wOwn = mj * ownPerMass;          // m_j / (2 pi r_i)
-    const double wPair = 0.5 * (wOwn + areaMass); // the symmetric viscous weight
-    const double vzj = dj.vz, vrj = sg * dj.vr;
-    const double dvz = di.vz - vzj, dvr = di.vr - vrj;
-    // Artificial viscosity for approaching pairs.
-    double visc = 0.0;
-    const double dot = dvz * dz + dvr * dr;
-    if (dot < 0.0) {
-        const double mu = hij * dot / (dist2 + c.eta2 * hij * hij);
-        const double cbar = 0.5 * (di.cs + dj.cs);
-        const double rhobar = 0.5 * (di.rho + dj.rho);
-        visc = (-c.alpha * cbar * mu + c.beta * mu * mu) / rhobar;
-        sum.maxMu = std::max(sum.maxMu, -mu);
-    }
-    double ozz = di.bzz, orr = di.brr, orz = di.brz;      // own
-    double nzz = dj.bzz, nrr = dj.brr, nrz = sg * dj.brz; // neighbour's
-    if constexpr (kArtificialStress) {
-        const double f = Shape::shape(q) * c.invShapeAtSpacing;
-        const double f2 = f * f;
-        const double fn = f2 * f2; // n = 4 (Gray, Monaghan & Swift 2001)
-        ozz += fn * di.azz;
-        orr += fn * di.arr;
-        orz += fn * di.arz;
-        nzz += fn * dj.azz;
-        nrr += fn * dj.arr;
-        nrz += fn * sg * dj.arz;
-    }
-    const double ownZ = ozz * wz + orz * wr, ownR = orz * wz + orr * wr;
-    const double nbrZ = nzz * wz + nrz * wr, nbrR = nrz * wz + nrr * wr;
-    sum.az += wOwn * ownZ + areaMass * nbrZ - wPair * visc * wz;
-    sum.ar += wOwn * ownR + areaMass * nbrR - wPair * visc * wr;
-    // Particle i's share of the pair's work (the compatible energy split). The stress part of
-    // the pair's work is m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) : v_ij grad W; i takes
-    // m_i A_j B_i of it and j takes m_j A_i B_j, and each half the remainder
-    // m_i m_j (1 / 2 pi r_i - 1 / 2 pi r_j)(B_i - B_j), which is small (a stress difference
-    // times a radius difference). Exact per pair. Taking instead the whole own-stress part
-    // (weight w_own) heated the first column 1.49 times as fast as its row under a uniform
-    // compression: next to the axis w_own sums the mirror images' |r|, not their signed r.
-    // The viscous work is halved between the pair as before: split with the area weights
-    // too, the cylindrical Noh shock ran 10 % ahead instead of 3 %.
-    const double halfExcess = 0.5 * (wOwn - areaMass);
-    sum.de -= wPair * (dvz * ownZ + dvr * ownR) - halfExcess * (dvz * nbrZ + dvr * nbrR) -
+/// The sums are scalars reduced by `omp simd`: the neighbours are taken four at a time (AVX2),
+/// each lane summing its own share, and the lanes are added in a fixed order at the end, so
+/// the same build gives the same sums whatever the thread count. The viscosity is computed for
+/// every pair and kept only for approaching ones.
+template <class Shape, bool kArtificialStress, bool kAxi, bool kMirrored>
+HVI_INLINE PairSums sumPairs(const PairData& di, const PairData* pd,
+                             const InsideNeighbours& inside, std::size_t padded,
+                             double ownPerMass, const PairCoefficients& c) {
+    double az = 0.0, ar = 0.0, de = 0.0, lzz = 0.0, lzr = 0.0, lrz = 0.0, lrr = 0.0;
+    double mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0, gr = 0.0, viscHoop = 0.0;
+    double ownExcessZ = 0.0, viscExcessZ = 0.0, workExcessZ = 0.0, pairDivergence = 0.0;
+    double maxMu = 0.0;
+    int64_t contrast = 0; // 64-bit as the index (InsideNeighbours)
+    const double zi = di.z, ri = di.r, hi = di.h, vzi = di.vz, vri = di.vr, rhoi = di.rho;
+    const double csi = di.cs, ozz0 = di.bzz, orr0 = di.brr, orz0 = di.brz;
+    const double azzi = di.azz, arri = di.arr, arzi = di.arz;
+    const int64_t* src = inside.source.data();
+    const double* sgn = inside.sign.data();
+#pragma omp simd reduction(+ : az, ar, de, lzz, lzr, lrz, lrr, mzz, mzr, mrz, mrr, gr, viscHoop,  \
+                               ownExcessZ, viscExcessZ, workExcessZ, pairDivergence)              \
+    reduction(max : maxMu) reduction(| : contrast)
+    for (std::size_t k = 0; k < padded; ++k) {
+        const PairData& dj = pd[src[k]];
+        const double sg = sgn[k];
+        const double dz = zi - dj.z;
+        const double dr = ri - sg * dj.r;
+        const double hij = 0.5 * (hi + dj.h);
+        const double dist2 = dz * dz + dr * dr;
+        const double invH = 1.0 / hij;
+        const double invH2 = invH * invH;
+        const double q = std::sqrt(dist2) * invH;
+        // grad W = kNorm f'(q)/q / h^4 * x_ij (Kernel.hpp), without the divisions.
+        const double gor = Shape::kNorm * Shape::shapeDerivOverQInSupport(q) * invH2 * invH2;
+        const double wz = gor * dz, wr = gor * dr; // grad_i W_ij
+        const double mj = dj.mass;
+        const double areaMass = dj.areaMass;          // m_j / (2 pi r_j)
+        const double wOwn = mj * ownPerMass;          // m_j / (2 pi r_i)
+        const double wPair = 0.5 * (wOwn + areaMass); // the symmetric viscous weight
+        const double rhoj = dj.rho;
+        const double dvz = vzi - dj.vz, dvr = vri - sg * dj.vr;
+        // Artificial viscosity for approaching pairs (mu <= 0 there; 0 for receding ones).
+        const double dot = dvz * dz + dvr * dr;
+        const double muAll = hij * dot / (dist2 + c.eta2 * hij * hij);
+        const double mu = dot < 0.0 ? muAll : 0.0;
+        const double cbar = 0.5 * (csi + dj.cs);
+        const double rhobar = 0.5 * (rhoi + rhoj);
+        const double visc = (-c.alpha * cbar * mu + c.beta * mu * mu) / rhobar;
+        maxMu = std::max(maxMu, -mu);
+        double ozz = ozz0, orr = orr0, orz = orz0;            // own
+        double nzz = dj.bzz, nrr = dj.brr, nrz = sg * dj.brz; // neighbour's
+        if constexpr (kArtificialStress) {
+            const double f = Shape::shapeInSupport(q) * c.invShapeAtSpacing;
+            const double f2 = f * f;
+            const double fn = f2 * f2; // n = 4 (Gray, Monaghan & Swift 2001)
+            ozz += fn * azzi;
+            orr += fn * arri;
+            orz += fn * arzi;
+            nzz += fn * dj.azz;
+            nrr += fn * dj.arr;
+            nrz += fn * sg * dj.arz;
+        }
+        const double ownZ = ozz * wz + orz * wr, ownR = orz * wz + orr * wr;
+        const double nbrZ = nzz * wz + nrz * wr, nbrR = nrz * wz + nrr * wr;
+        az += wOwn * ownZ + areaMass * nbrZ - wPair * visc * wz;
+        ar += wOwn * ownR + areaMass * nbrR - wPair * visc * wr;
+        // Particle i's share of the pair's work (the compatible energy split). The stress part
+        // of the pair's work is m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) : v_ij grad W; i
+        // takes m_i A_j B_i of it and j takes m_j A_i B_j, and each half the remainder
+        // m_i m_j (1 / 2 pi r_i - 1 / 2 pi r_j)(B_i - B_j), which is small (a stress
+        // difference times a radius difference). Exact per pair. Taking instead the whole
+        // own-stress part (weight w_own) heated the first column 1.49 times as fast as its row
+        // under a uniform compression: next to the axis w_own sums the mirror images' |r|, not
+        // their signed r. The viscous work is halved between the pair as before: split with
+        // the area weights too, the cylindrical Noh shock ran 10 % ahead instead of 3 %.
+        const double halfExcess = 0.5 * (wOwn - areaMass);
+        de -= wPair * (dvz * ownZ + dvr * ownR) - halfExcess * (dvz * nbrZ + dvr * nbrR) -
               wPair * 0.5 * visc * (dvz * wz + dvr * wr);
-    // The pairwise density rate, and whether this neighbour's density stands out.
-    sum.pairDivergence += areaMass * (dvz * wz + dvr * wr);
-    sum.contrast |= (dj.rho > kDensityContrast * di.rho) | (di.rho > kDensityContrast * dj.rho);
-    // Velocity gradient and its linear correction matrix.
-    const double vol = dj.volume;
-    sum.lzz -= vol * dvz * wz;
-    sum.lzr -= vol * dvz * wr;
-    sum.lrz -= vol * dvr * wz;
-    sum.lrr -= vol * dvr * wr;
-    sum.mzz -= vol * dz * wz;
-    sum.mzr -= vol * dz * wr;
-    sum.mrz -= vol * dr * wz;
-    sum.mrr -= vol * dr * wr;
-    if (axi) {
-        const double excess = (wPair - areaMass) * wr;
-        sum.gr += excess;
-        sum.viscHoop += excess * visc;
-        if (mirrored) {
-            sum.ownExcessZ += (wOwn - areaMass) * ozz * wz;
-            sum.viscExcessZ -= (wPair - areaMass) * visc * wz;
-            sum.workExcessZ +=
-                (halfExcess * (ozz - nzz) - 0.5 * (wPair - areaMass) * visc) * dvz * wz;
+        // The pairwise density rate, and whether this neighbour's density stands out.
+        pairDivergence += areaMass * (dvz * wz + dvr * wr);
+        contrast |= static_cast<int64_t>(rhoj > kDensityContrast * rhoi) |
+                    static_cast<int64_t>(rhoi > kDensityContrast * rhoj);
+        // Velocity gradient and its linear correction matrix.
+        const double vol = dj.volume;
+        lzz -= vol * dvz * wz;
+        lzr -= vol * dvz * wr;
+        lrz -= vol * dvr * wz;
+        lrr -= vol * dvr * wr;
+        mzz -= vol * dz * wz;
+        mzr -= vol * dz * wr;
+        mrz -= vol * dr * wz;
+        mrr -= vol * dr * wr;
+        if constexpr (kAxi) {
+            const double excess = (wPair - areaMass) * wr;
+            gr += excess;
+            viscHoop += excess * visc;
+            if constexpr (kMirrored) {
+                ownExcessZ += (wOwn - areaMass) * ozz * wz;
+                viscExcessZ -= (wPair - areaMass) * visc * wz;
+                workExcessZ +=
+                    (halfExcess * (ozz - nzz) - 0.5 * (wPair - areaMass) * visc) * dvz * wz;
+            }
         }
     }
+    PairSums sum;
+    sum.az = az;
+    sum.ar = ar;
+    sum.de = de;
+    sum.lzz = lzz;
+    sum.lzr = lzr;
+    sum.lrz = lrz;
+    sum.lrr = lrr;
+    sum.mzz = mzz;
+    sum.mzr = mzr;
+    sum.mrz = mrz;
+    sum.mrr = mrr;
+    sum.gr = gr;
+    sum.ownExcessZ = ownExcessZ;
+    sum.viscExcessZ = viscExcessZ;
+    sum.workExcessZ = workExcessZ;
+    sum.viscHoop = viscHoop;
+    sum.maxMu = maxMu;
+    sum.pairDivergence = pairDivergence;
+    sum.contrast = contrast != 0;
+    return sum;
+}
+
+/// sumPairs with the scene's geometry and the particle's mirror flag as compile-time
+/// choices (the mirrored particles are few; the rest carry none of the axial-excess sums).
+template <class Shape, bool kArtificialStress>
+HVI_INLINE PairSums sumPairsOf(bool axi, bool mirrored, const PairData& di, const PairData* pd,
+                               const InsideNeighbours& inside, std::size_t padded,
+                               double ownPerMass, const PairCoefficients& c) {
+    if (!axi) {
+        return sumPairs<Shape, kArtificialStress, false, false>(di, pd, inside, padded,
+                                                                ownPerMass, c);
+    }
+    if (mirrored) {
+        return sumPairs<Shape, kArtificialStress, true, true>(di, pd, inside, padded, ownPerMass,
+                                                              c);
+    }
+    return sumPairs<Shape, kArtificialStress, true, false>(di, pd, inside, padded, ownPerMass,
+                                                           c);
 }
 
 /// Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
@@ -293,7 +378,7 @@ int64_t longestRow(const NeighbourList& list) {
 template <class Kern, bool kArtificialStress>
 void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const HydroOptions& opt,
                    const std::vector<PairData>& data, ParticleRates& rates, double* steps,
-                   StepVote& vote) {
+                   StepVote& vote, PairCounts& pairs) {
     using Shape = typename Kern::ShapeType;
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
@@ -301,8 +386,6 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
                                  1.0 / Shape::shape(opt.spacingOverH)};
     const double inv2Pi = 0.5 / units::kPi;
     const std::size_t activeCount = list.active.size();
-    const auto* src = list.source.data();
-    const auto* sgn = list.sign.data();
     const PairData* pd = data.data();
     const auto pairwiseAtContrast = [&](std::size_t i) {
         const auto b = static_cast<std::size_t>(ps.body[i]);
@@ -313,28 +396,29 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
     // Thread-local vote, combined in a fixed order afterwards (min is order-independent,
     // ties broken by the lowest particle index, so the result is thread-count independent).
     std::vector<StepVote> threadVotes(static_cast<std::size_t>(omp_get_max_threads()));
+    std::vector<PairCounts> threadPairs(threadVotes.size());
     const int64_t rowCapacity = longestRow(list);
 #pragma omp parallel if (activeCount > kParallelMinHeavyItems)
     {
         StepVote local;
+        PairCounts localPairs;
         // This particle's neighbours within the support (sized once: no per-particle fill).
-        std::vector<int32_t> inside(static_cast<std::size_t>(rowCapacity));
+        InsideNeighbours inside(static_cast<std::size_t>(rowCapacity));
         // Dynamic chunks balance the threads (a particle's cost varies with its neighbours);
         // each particle's sums are its own, so who computes it does not change the result.
 #pragma omp for schedule(dynamic, 256)
         for (std::size_t a = 0; a < activeCount; ++a) {
             const int32_t i = list.active[a];
             const PairData& di = pd[i];
-            const std::size_t count = keepInside(list, list.row[a], di, pd, inside);
+            const std::size_t count = keepInside(list, list.row[a], i, pd, inside);
+            const std::size_t padded = (count + kPairLanes - 1) / kPairLanes * kPairLanes;
+            localPairs.inside += count;
+            localPairs.computed += padded;
             // A mirror image is among the neighbours (ghosts come last in a row).
-            const bool mirrored = count > 0 && sgn[inside[count - 1]] < 0.0;
+            const bool mirrored = count > 0 && inside.sign[count - 1] < 0.0;
             const double ownPerMass = axi ? inv2Pi / di.r : 1.0; // w_own = m_j / (2 pi r_i)
-            PairSums sum;
-            for (std::size_t k = 0; k < count; ++k) {
-                const int32_t j = inside[k];
-                addPair<Shape, kArtificialStress>(sum, di, pd[src[j]], sgn[j], ownPerMass, axi,
-                                                  mirrored, coeff);
-            }
+            PairSums sum = sumPairsOf<Shape, kArtificialStress>(
+                axi, mirrored, di, pd, inside, padded, ownPerMass, coeff);
             correctGradient(sum);
             const double hoopRate =
                 axi ? addHoopTerms(sum, ps, static_cast<std::size_t>(i), di, strength, mirrored)
@@ -349,6 +433,11 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             }
         }
         threadVotes[static_cast<std::size_t>(omp_get_thread_num())] = local;
+        threadPairs[static_cast<std::size_t>(omp_get_thread_num())] = localPairs;
+    }
+    for (const auto& c : threadPairs) {
+        pairs.inside += c.inside;
+        pairs.computed += c.computed;
     }
     for (const auto& v : threadVotes) {
         if (v.particle >= 0 &&
@@ -415,14 +504,15 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, Partic
         d.volume = d.areaMass / ps.rho[i];
     }
     StepVote vote;
+    m_pairs = PairCounts{};
     m_particleSteps.resize(list.active.size());
     double* steps = m_particleSteps.data();
     withKernel(m_options.kernel, [&](auto kernel) {
         using Kern = decltype(kernel);
         if (m_options.artificialStress > 0.0) {
-            evaluatePairs<Kern, true>(ps, list, m_options, m_data, rates, steps, vote);
+            evaluatePairs<Kern, true>(ps, list, m_options, m_data, rates, steps, vote, m_pairs);
         } else {
-            evaluatePairs<Kern, false>(ps, list, m_options, m_data, rates, steps, vote);
+            evaluatePairs<Kern, false>(ps, list, m_options, m_data, rates, steps, vote, m_pairs);
         }
     });
     m_stableDt = vote.dt;

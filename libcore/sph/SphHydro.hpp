@@ -104,6 +104,19 @@ struct alignas(64) PairData {
     double azz, arr, arz; ///< artificial stress R / rho^2 [GPa cm^6/g^2] (0 when off)
 };
 
+/// The pairs of one evaluation: those inside the support, and those the vectorised loop
+/// computed (each particle's padded to a multiple of its lanes with null pairs).
+struct PairCounts {
+    std::size_t inside = 0;
+    std::size_t computed = 0;
+};
+
+/// Flops of one computed pair of the hydro pair loop, counted from its source (a fused
+/// multiply-add as two; each of its four divisions and its square root as one, though each
+/// costs the divider several cycles), without the artificial stress: the assumption behind
+/// the benchmark's flop rate (docs/performance.md).
+inline constexpr double kPairFlops = 130.0;
+
 class SphHydro {
 public:
     explicit SphHydro(HydroOptions options) : m_options(options) {}
@@ -127,6 +140,8 @@ public:
     /// Each active particle's own vote in the last evaluate(), in the list's active order
     /// [us] (+inf: it sets no limit); empty after a resume until the next evaluate().
     const std::vector<double>& particleSteps() const { return m_particleSteps; }
+    /// The pairs of the last evaluate().
+    const PairCounts& pairCounts() const { return m_pairs; }
 
     const HydroOptions& options() const { return m_options; }
 
@@ -136,6 +151,7 @@ private:
     int32_t m_limitingParticle = -1;
     std::vector<PairData> m_data; ///< per particle, refreshed by every evaluate()
     std::vector<double> m_particleSteps;
+    PairCounts m_pairs;
 };
 
 } // namespace hvi::sph

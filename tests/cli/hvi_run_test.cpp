@@ -379,6 +379,9 @@ TEST(HviRunCli, BenchmarkPrintsThroughput) {
                                       "--threads 1");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("particle-steps/s"), std::string::npos) << r.out;
+    // The pair loop's throughput with the flops a pair it assumes (issue #27's roofline).
+    EXPECT_NE(r.out.find("inside the support"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("GFLOP/s at 130 flops a pair"), std::string::npos) << r.out;
     // The FE scene reports its element throughput and what an element-step costs against an
     // active particle-step (issue #5's comparison).
     EXPECT_NE(r.out.find("element-steps/s"), std::string::npos) << r.out;

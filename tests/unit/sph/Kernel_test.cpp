@@ -158,3 +158,17 @@ TEST(Kernel, DispatchSelectsTheNamedKernel) {
     EXPECT_EQ(kernelTypeFromName("cubic_spline"), KernelType::CubicSpline);
     EXPECT_THROW(kernelTypeFromName("quintic"), std::invalid_argument);
 }
+
+TYPED_TEST(KernelTest, BranchFreeFormsEqualTheBranchedOnesInsideTheSupport) {
+    // The vectorised pair loop (SphHydro.cpp) evaluates the shapes without their piece tests;
+    // inside the support they must be the same functions, the cubic spline's joint at q = 1
+    // and the limit at q = 0 included.
+    using Shape = typename TypeParam::ShapeType;
+    for (int k = 0; k < 2000; ++k) {
+        const double q = 1.0e-3 * k;
+        const std::string where = std::string(Shape::kId) + " at q=" + std::to_string(q);
+        EXPECT_TRUE(near("f " + where, Shape::shapeInSupport(q), Shape::shape(q), 1e-15, 1e-15));
+        EXPECT_TRUE(near("f'/q " + where, Shape::shapeDerivOverQInSupport(q),
+                         Shape::shapeDerivOverQ(q), 1e-15, 1e-15));
+    }
+}
