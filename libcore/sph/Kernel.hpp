@@ -28,6 +28,7 @@
 // virtual call per neighbour pair.
 #pragma once
 
+#include "core/Lanes.hpp"
 #include "core/Units.hpp"
 
 #include <stdexcept>
@@ -67,21 +68,23 @@ struct CubicSplineKernel {
         }
         return 0.0;
     }
-    /// f(q) and f'(q)/q without a branch, for 0 <= q < 2 (a pair inside the support): both
-    /// pieces are computed and a select keeps one, so a vectorised pair loop needs no masked
-    /// division (AVX2 has none). At q = 0 the unused outer piece of f'(q)/q is infinite and
-    /// dropped by the select.
-    static double shapeInSupport(double q) noexcept {
-        const double t = 2.0 - q;
-        const double inner = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
-        const double outer = 0.25 * t * t * t;
-        return q < 1.0 ? inner : outer;
+    /// f(q) and f'(q)/q without a branch, for 0 <= q < 2 (a pair inside the support), for one
+    /// value or four lanes (core/Lanes.hpp): both pieces are computed and a select keeps one,
+    /// so a vectorised pair loop needs no masked division (AVX2 has none). At q = 0 the
+    /// unused outer piece of f'(q)/q is infinite and dropped by the select.
+    template <class V>
+    static V shapeInSupport(V q) noexcept {
+        const V t = 2.0 - q;
+        const V inner = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+        const V outer = 0.25 * t * t * t;
+        return selectLess(q, V(1.0), inner, outer);
     }
-    static double shapeDerivOverQInSupport(double q) noexcept {
-        const double t = 2.0 - q;
-        const double inner = -3.0 + 2.25 * q;
-        const double outer = -0.75 * t * t / q;
-        return q < 1.0 ? inner : outer;
+    template <class V>
+    static V shapeDerivOverQInSupport(V q) noexcept {
+        const V t = 2.0 - q;
+        const V inner = -3.0 + 2.25 * q;
+        const V outer = -0.75 * t * t / q;
+        return selectLess(q, V(1.0), inner, outer);
     }
     /// f'(q).
     static double shapeDeriv(double q) noexcept {
@@ -117,13 +120,15 @@ struct WendlandC2Kernel {
         return -5.0 * t * t * t;
     }
     /// The same without the support test, for 0 <= q < 2 (CubicSplineKernel says why).
-    static double shapeInSupport(double q) noexcept {
-        const double t = 1.0 - 0.5 * q;
-        const double t2 = t * t;
+    template <class V>
+    static V shapeInSupport(V q) noexcept {
+        const V t = 1.0 - 0.5 * q;
+        const V t2 = t * t;
         return t2 * t2 * (1.0 + 2.0 * q);
     }
-    static double shapeDerivOverQInSupport(double q) noexcept {
-        const double t = 1.0 - 0.5 * q;
+    template <class V>
+    static V shapeDerivOverQInSupport(V q) noexcept {
+        const V t = 1.0 - 0.5 * q;
         return -5.0 * t * t * t;
     }
     static double shapeDeriv(double q) noexcept { return q * shapeDerivOverQ(q); }
@@ -151,14 +156,16 @@ struct WendlandC4Kernel {
         return -(14.0 / 3.0) * t2 * t2 * t * (1.0 + 2.5 * q);
     }
     /// The same without the support test, for 0 <= q < 2 (CubicSplineKernel says why).
-    static double shapeInSupport(double q) noexcept {
-        const double t = 1.0 - 0.5 * q;
-        const double t2 = t * t;
+    template <class V>
+    static V shapeInSupport(V q) noexcept {
+        const V t = 1.0 - 0.5 * q;
+        const V t2 = t * t;
         return t2 * t2 * t2 * (1.0 + 3.0 * q + (35.0 / 12.0) * q * q);
     }
-    static double shapeDerivOverQInSupport(double q) noexcept {
-        const double t = 1.0 - 0.5 * q;
-        const double t2 = t * t;
+    template <class V>
+    static V shapeDerivOverQInSupport(V q) noexcept {
+        const V t = 1.0 - 0.5 * q;
+        const V t2 = t * t;
         return -(14.0 / 3.0) * t2 * t2 * t * (1.0 + 2.5 * q);
     }
     static double shapeDeriv(double q) noexcept { return q * shapeDerivOverQ(q); }

@@ -1,10 +1,12 @@
 #include "sph/SphHydro.hpp"
 
+#include "core/Lanes.hpp"
 #include "core/Parallel.hpp"
 #include "core/Units.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <omp.h>
 
@@ -25,7 +27,7 @@ struct StepVote {
     int32_t particle = -1;
 };
 
-/// The vectorised loop's lanes: four doubles of a 256-bit vector (AVX2).
+/// The pair loop's lanes: four doubles of a 256-bit vector (core/Lanes.hpp).
 constexpr std::size_t kPairLanes = 4;
 
 // The pair loop is split into steps that the compiler inlines into one loop body (so the
@@ -55,12 +57,9 @@ struct PairSums {
 };
 
 /// A particle's neighbours inside its support: the particle each stands for and its sign (-1:
-/// the mirror image across the axis), contiguous for the vectorised loop. The index is 64-bit
-/// so that every array of the loop has the doubles' width: with a 32-bit index GCC takes
-/// eight lanes (the int32 width of a 256-bit vector) and runs the last four pairs of a
-/// particle in its scalar epilogue.
+/// the mirror image across the axis), contiguous for the pair loop.
 struct InsideNeighbours {
-    std::vector<int64_t> source;
+    std::vector<int32_t> source;
     std::vector<double> sign;
     explicit InsideNeighbours(std::size_t capacity)
         : source(capacity + kPairLanes), sign(capacity + kPairLanes) {}
@@ -86,7 +85,7 @@ HVI_INLINE std::size_t keepInside(const NeighbourList& list, int32_t row, int32_
         const double dz = di.z - dj.z;
         const double dr = di.r - sgn[j] * dj.r;
         const double support = kKernelSupport * 0.5 * (di.h + dj.h);
-        inside.source[count] = static_cast<int64_t>(sj);
+        inside.source[count] = sj;
         inside.sign[count] = sgn[j];
         count += (dz * dz + dr * dr < support * support) ? 1 : 0;
     }
@@ -97,154 +96,226 @@ HVI_INLINE std::size_t keepInside(const NeighbourList& list, int32_t row, int32_
     return count;
 }
 
-/// Pass 2: the pair sums of particle i over the `padded` entries of `inside` (each mirrored
-/// when its sign is -1). Each particle's own stress acts over its own circumference and the
-/// neighbour's over the neighbour's: the pair force
+/// A neighbour's record as the pair body reads it: one neighbour (V = double) or four lanes
+/// of four neighbours (V = Lanes4), with its mirror sign.
+template <class V>
+struct Neighbour {
+    V z, r, h, mass, vz, vr, rho, cs, bzz, brr, brz, areaMass, volume, azz, arr, arz, sign;
+};
+
+HVI_INLINE Neighbour<double> neighbourAt(const PairData* pd, const InsideNeighbours& inside,
+                                         std::size_t k) {
+    const PairData& d = pd[static_cast<std::size_t>(inside.source[k])];
+    return {d.z,   d.r,   d.h,        d.mass,   d.vz,  d.vr,  d.rho, d.cs,          d.bzz,
+            d.brr, d.brz, d.areaMass, d.volume, d.azz, d.arr, d.arz, inside.sign[k]};
+}
+
+#if HVI_HAVE_LANES4
+static_assert(sizeof(PairData) == 16 * sizeof(double) && alignof(PairData) >= 32 &&
+                  offsetof(PairData, vz) == 4 * sizeof(double) &&
+                  offsetof(PairData, bzz) == 8 * sizeof(double) &&
+                  offsetof(PairData, volume) == 12 * sizeof(double),
+              "a neighbour record is four aligned groups of four doubles, in neighboursAt's order");
+
+/// Neighbours k to k+3: each record loaded as four 256-bit groups and four records
+/// transposed at once, a field to a vector (eight shuffles for four fields of four lanes,
+/// where a lane-by-lane gather takes four loads and three inserts for each field).
+HVI_INLINE Neighbour<Lanes4> neighboursAt(const PairData* pd, const InsideNeighbours& inside,
+                                          std::size_t k) {
+    const double* rec[kPairLanes];
+    for (std::size_t l = 0; l < kPairLanes; ++l) {
+        rec[l] = &pd[static_cast<std::size_t>(inside.source[k + l])].z;
+    }
+    // Group g of the four records (doubles 4g to 4g+3 of each), one field a vector.
+    const auto group = [&rec](std::size_t g, Lanes4& a, Lanes4& b, Lanes4& c, Lanes4& d) {
+        a = Lanes4(_mm256_load_pd(rec[0] + 4 * g));
+        b = Lanes4(_mm256_load_pd(rec[1] + 4 * g));
+        c = Lanes4(_mm256_load_pd(rec[2] + 4 * g));
+        d = Lanes4(_mm256_load_pd(rec[3] + 4 * g));
+        transpose4(a, b, c, d);
+    };
+    Neighbour<Lanes4> n;
+    group(0, n.z, n.r, n.h, n.mass);
+    group(1, n.vz, n.vr, n.rho, n.cs);
+    group(2, n.bzz, n.brr, n.brz, n.areaMass);
+    group(3, n.volume, n.azz, n.arr, n.arz);
+    n.sign = Lanes4(_mm256_loadu_pd(inside.sign.data() + k));
+    return n;
+}
+#endif
+
+/// The pair loop's running sums, one per lane.
+template <class V>
+struct PairAccumulators {
+    V az = 0.0, ar = 0.0, de = 0.0, lzz = 0.0, lzr = 0.0, lrz = 0.0, lrr = 0.0;
+    V mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0, gr = 0.0, viscHoop = 0.0;
+    V ownExcessZ = 0.0, viscExcessZ = 0.0, workExcessZ = 0.0, pairDivergence = 0.0;
+    V maxMu = 0.0;
+    V contrast = 0.0; // 1 where a neighbour's density stands out
+};
+
+/// One pair (i, j), or four, with j mirrored where its sign is -1. Each particle's own stress
+/// acts over its own circumference and the neighbour's over the neighbour's: the pair force
 /// m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) . grad W is antisymmetric (z-momentum is exact)
-/// and its axial part is the area-weighted, consistent one even at the axis.
+/// and its axial part is the area-weighted, consistent one even at the axis. The viscosity is
+/// computed for every pair and kept only for approaching ones.
 /// `ownPerMass`: w_own / m_j = 1 / (2 pi r_i) (planar: 1).
-/// The sums are scalars reduced by `omp simd`: the neighbours are taken four at a time (AVX2),
-/// each lane summing its own share, and the lanes are added in a fixed order at the end, so
-/// the same build gives the same sums whatever the thread count. The viscosity is computed for
-/// every pair and kept only for approaching ones.
-template <class Shape, bool kArtificialStress, bool kAxi, bool kMirrored>
-HVI_INLINE PairSums sumPairs(const PairData& di, const PairData* pd,
-                             const InsideNeighbours& inside, std::size_t padded,
-                             double ownPerMass, const PairCoefficients& c) {
-    double az = 0.0, ar = 0.0, de = 0.0, lzz = 0.0, lzr = 0.0, lrz = 0.0, lrr = 0.0;
-    double mzz = 0.0, mzr = 0.0, mrz = 0.0, mrr = 0.0, gr = 0.0, viscHoop = 0.0;
-    double ownExcessZ = 0.0, viscExcessZ = 0.0, workExcessZ = 0.0, pairDivergence = 0.0;
-    double maxMu = 0.0;
-    int64_t contrast = 0; // 64-bit as the index (InsideNeighbours)
-    const double zi = di.z, ri = di.r, hi = di.h, vzi = di.vz, vri = di.vr, rhoi = di.rho;
-    const double csi = di.cs, ozz0 = di.bzz, orr0 = di.brr, orz0 = di.brz;
-    const double azzi = di.azz, arri = di.arr, arzi = di.arz;
-    const int64_t* src = inside.source.data();
-    const double* sgn = inside.sign.data();
-#pragma omp simd reduction(+ : az, ar, de, lzz, lzr, lrz, lrr, mzz, mzr, mrz, mrr, gr, viscHoop,  \
-                               ownExcessZ, viscExcessZ, workExcessZ, pairDivergence)              \
-    reduction(max : maxMu) reduction(| : contrast)
-    for (std::size_t k = 0; k < padded; ++k) {
-        const PairData& dj = pd[src[k]];
-        const double sg = sgn[k];
-        const double dz = zi - dj.z;
-        const double dr = ri - sg * dj.r;
-        const double hij = 0.5 * (hi + dj.h);
-        const double dist2 = dz * dz + dr * dr;
-        const double invH = 1.0 / hij;
-        const double invH2 = invH * invH;
-        const double q = std::sqrt(dist2) * invH;
-        // grad W = kNorm f'(q)/q / h^4 * x_ij (Kernel.hpp), without the divisions.
-        const double gor = Shape::kNorm * Shape::shapeDerivOverQInSupport(q) * invH2 * invH2;
-        const double wz = gor * dz, wr = gor * dr; // grad_i W_ij
-        const double mj = dj.mass;
-        const double areaMass = dj.areaMass;          // m_j / (2 pi r_j)
-        const double wOwn = mj * ownPerMass;          // m_j / (2 pi r_i)
-        const double wPair = 0.5 * (wOwn + areaMass); // the symmetric viscous weight
-        const double rhoj = dj.rho;
-        const double dvz = vzi - dj.vz, dvr = vri - sg * dj.vr;
-        // Artificial viscosity for approaching pairs (mu <= 0 there; 0 for receding ones).
-        const double dot = dvz * dz + dvr * dr;
-        const double muAll = hij * dot / (dist2 + c.eta2 * hij * hij);
-        const double mu = dot < 0.0 ? muAll : 0.0;
-        const double cbar = 0.5 * (csi + dj.cs);
-        const double rhobar = 0.5 * (rhoi + rhoj);
-        const double visc = (-c.alpha * cbar * mu + c.beta * mu * mu) / rhobar;
-        maxMu = std::max(maxMu, -mu);
-        double ozz = ozz0, orr = orr0, orz = orz0;            // own
-        double nzz = dj.bzz, nrr = dj.brr, nrz = sg * dj.brz; // neighbour's
-        if constexpr (kArtificialStress) {
-            const double f = Shape::shapeInSupport(q) * c.invShapeAtSpacing;
-            const double f2 = f * f;
-            const double fn = f2 * f2; // n = 4 (Gray, Monaghan & Swift 2001)
-            ozz += fn * azzi;
-            orr += fn * arri;
-            orz += fn * arzi;
-            nzz += fn * dj.azz;
-            nrr += fn * dj.arr;
-            nrz += fn * sg * dj.arz;
-        }
-        const double ownZ = ozz * wz + orz * wr, ownR = orz * wz + orr * wr;
-        const double nbrZ = nzz * wz + nrz * wr, nbrR = nrz * wz + nrr * wr;
-        az += wOwn * ownZ + areaMass * nbrZ - wPair * visc * wz;
-        ar += wOwn * ownR + areaMass * nbrR - wPair * visc * wr;
-        // Particle i's share of the pair's work (the compatible energy split). The stress part
-        // of the pair's work is m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) : v_ij grad W; i
-        // takes m_i A_j B_i of it and j takes m_j A_i B_j, and each half the remainder
-        // m_i m_j (1 / 2 pi r_i - 1 / 2 pi r_j)(B_i - B_j), which is small (a stress
-        // difference times a radius difference). Exact per pair. Taking instead the whole
-        // own-stress part (weight w_own) heated the first column 1.49 times as fast as its row
-        // under a uniform compression: next to the axis w_own sums the mirror images' |r|, not
-        // their signed r. The viscous work is halved between the pair as before: split with
-        // the area weights too, the cylindrical Noh shock ran 10 % ahead instead of 3 %.
-        const double halfExcess = 0.5 * (wOwn - areaMass);
-        de -= wPair * (dvz * ownZ + dvr * ownR) - halfExcess * (dvz * nbrZ + dvr * nbrR) -
-              wPair * 0.5 * visc * (dvz * wz + dvr * wr);
-        // The pairwise density rate, and whether this neighbour's density stands out.
-        pairDivergence += areaMass * (dvz * wz + dvr * wr);
-        contrast |= static_cast<int64_t>(rhoj > kDensityContrast * rhoi) |
-                    static_cast<int64_t>(rhoi > kDensityContrast * rhoj);
-        // Velocity gradient and its linear correction matrix.
-        const double vol = dj.volume;
-        lzz -= vol * dvz * wz;
-        lzr -= vol * dvz * wr;
-        lrz -= vol * dvr * wz;
-        lrr -= vol * dvr * wr;
-        mzz -= vol * dz * wz;
-        mzr -= vol * dz * wr;
-        mrz -= vol * dr * wz;
-        mrr -= vol * dr * wr;
-        if constexpr (kAxi) {
-            const double excess = (wPair - areaMass) * wr;
-            gr += excess;
-            viscHoop += excess * visc;
-            if constexpr (kMirrored) {
-                ownExcessZ += (wOwn - areaMass) * ozz * wz;
-                viscExcessZ -= (wPair - areaMass) * visc * wz;
-                workExcessZ +=
-                    (halfExcess * (ozz - nzz) - 0.5 * (wPair - areaMass) * visc) * dvz * wz;
-            }
+template <class Shape, bool kArtificialStress, bool kAxi, bool kMirrored, class V>
+HVI_INLINE void addPair(PairAccumulators<V>& s, const PairData& di, const Neighbour<V>& dj,
+                        double ownPerMass, const PairCoefficients& c) {
+    const V sg = dj.sign;
+    const V dz = di.z - dj.z;
+    const V dr = di.r - sg * dj.r;
+    const V hij = 0.5 * (di.h + dj.h);
+    const V dist2 = dz * dz + dr * dr;
+    const V invH = 1.0 / hij;
+    const V invH2 = invH * invH;
+    const V q = sqrtOf(dist2) * invH;
+    // grad W = kNorm f'(q)/q / h^4 * x_ij (Kernel.hpp), without the divisions.
+    const V gor = Shape::kNorm * Shape::shapeDerivOverQInSupport(q) * invH2 * invH2;
+    const V wz = gor * dz, wr = gor * dr;    // grad_i W_ij
+    const V areaMass = dj.areaMass;          // m_j / (2 pi r_j)
+    const V wOwn = dj.mass * ownPerMass;     // m_j / (2 pi r_i)
+    const V wPair = 0.5 * (wOwn + areaMass); // the symmetric viscous weight
+    const V dvz = di.vz - dj.vz, dvr = di.vr - sg * dj.vr;
+    // Artificial viscosity for approaching pairs (mu <= 0 there; 0 for receding ones).
+    const V dot = dvz * dz + dvr * dr;
+    const V muAll = hij * dot / (dist2 + c.eta2 * hij * hij);
+    const V mu = selectLess(dot, V(0.0), muAll, V(0.0));
+    const V cbar = 0.5 * (di.cs + dj.cs);
+    const V rhobar = 0.5 * (di.rho + dj.rho);
+    const V visc = (-c.alpha * cbar * mu + c.beta * mu * mu) / rhobar;
+    s.maxMu = maxOf(s.maxMu, -mu);
+    V ozz = di.bzz, orr = di.brr, orz = di.brz;      // own
+    V nzz = dj.bzz, nrr = dj.brr, nrz = sg * dj.brz; // neighbour's
+    if constexpr (kArtificialStress) {
+        const V f = Shape::shapeInSupport(q) * c.invShapeAtSpacing;
+        const V f2 = f * f;
+        const V fn = f2 * f2; // n = 4 (Gray, Monaghan & Swift 2001)
+        ozz += fn * di.azz;
+        orr += fn * di.arr;
+        orz += fn * di.arz;
+        nzz += fn * dj.azz;
+        nrr += fn * dj.arr;
+        nrz += fn * sg * dj.arz;
+    }
+    const V ownZ = ozz * wz + orz * wr, ownR = orz * wz + orr * wr;
+    const V nbrZ = nzz * wz + nrz * wr, nbrR = nrz * wz + nrr * wr;
+    s.az += wOwn * ownZ + areaMass * nbrZ - wPair * visc * wz;
+    s.ar += wOwn * ownR + areaMass * nbrR - wPair * visc * wr;
+    // Particle i's share of the pair's work (the compatible energy split). The stress part of
+    // the pair's work is m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) : v_ij grad W; i takes
+    // m_i A_j B_i of it and j takes m_j A_i B_j, and each half the remainder
+    // m_i m_j (1 / 2 pi r_i - 1 / 2 pi r_j)(B_i - B_j), which is small (a stress difference
+    // times a radius difference). Exact per pair. Taking instead the whole own-stress part
+    // (weight w_own) heated the first column 1.49 times as fast as its row under a uniform
+    // compression: next to the axis w_own sums the mirror images' |r|, not their signed r.
+    // The viscous work is halved between the pair as before: split with the area weights
+    // too, the cylindrical Noh shock ran 10 % ahead instead of 3 %.
+    const V halfExcess = 0.5 * (wOwn - areaMass);
+    s.de -= wPair * (dvz * ownZ + dvr * ownR) - halfExcess * (dvz * nbrZ + dvr * nbrR) -
+            wPair * 0.5 * visc * (dvz * wz + dvr * wr);
+    // The pairwise density rate, and whether this neighbour's density stands out.
+    s.pairDivergence += areaMass * (dvz * wz + dvr * wr);
+    s.contrast = maxOf(s.contrast, selectLess(kDensityContrast * di.rho, dj.rho, V(1.0), V(0.0)));
+    s.contrast =
+        maxOf(s.contrast, selectLess(kDensityContrast * dj.rho, V(di.rho), V(1.0), V(0.0)));
+    // Velocity gradient and its linear correction matrix.
+    const V vol = dj.volume;
+    s.lzz -= vol * dvz * wz;
+    s.lzr -= vol * dvz * wr;
+    s.lrz -= vol * dvr * wz;
+    s.lrr -= vol * dvr * wr;
+    s.mzz -= vol * dz * wz;
+    s.mzr -= vol * dz * wr;
+    s.mrz -= vol * dr * wz;
+    s.mrr -= vol * dr * wr;
+    if constexpr (kAxi) {
+        const V excess = (wPair - areaMass) * wr;
+        s.gr += excess;
+        s.viscHoop += excess * visc;
+        if constexpr (kMirrored) {
+            s.ownExcessZ += (wOwn - areaMass) * ozz * wz;
+            s.viscExcessZ -= (wPair - areaMass) * visc * wz;
+            s.workExcessZ +=
+                (halfExcess * (ozz - nzz) - 0.5 * (wPair - areaMass) * visc) * dvz * wz;
         }
     }
+}
+
+HVI_INLINE double maxLane(double x) {
+    return x;
+}
+
+/// The lanes' sums, each added in one fixed order (core/Lanes.hpp).
+template <class V>
+HVI_INLINE PairSums reduceLanes(const PairAccumulators<V>& s) {
     PairSums sum;
-    sum.az = az;
-    sum.ar = ar;
-    sum.de = de;
-    sum.lzz = lzz;
-    sum.lzr = lzr;
-    sum.lrz = lrz;
-    sum.lrr = lrr;
-    sum.mzz = mzz;
-    sum.mzr = mzr;
-    sum.mrz = mrz;
-    sum.mrr = mrr;
-    sum.gr = gr;
-    sum.ownExcessZ = ownExcessZ;
-    sum.viscExcessZ = viscExcessZ;
-    sum.workExcessZ = workExcessZ;
-    sum.viscHoop = viscHoop;
-    sum.maxMu = maxMu;
-    sum.pairDivergence = pairDivergence;
-    sum.contrast = contrast != 0;
+    sum.az = sumOf(s.az);
+    sum.ar = sumOf(s.ar);
+    sum.de = sumOf(s.de);
+    sum.lzz = sumOf(s.lzz);
+    sum.lzr = sumOf(s.lzr);
+    sum.lrz = sumOf(s.lrz);
+    sum.lrr = sumOf(s.lrr);
+    sum.mzz = sumOf(s.mzz);
+    sum.mzr = sumOf(s.mzr);
+    sum.mrz = sumOf(s.mrz);
+    sum.mrr = sumOf(s.mrr);
+    sum.gr = sumOf(s.gr);
+    sum.ownExcessZ = sumOf(s.ownExcessZ);
+    sum.viscExcessZ = sumOf(s.viscExcessZ);
+    sum.workExcessZ = sumOf(s.workExcessZ);
+    sum.viscHoop = sumOf(s.viscHoop);
+    sum.maxMu = maxLane(s.maxMu);
+    sum.pairDivergence = sumOf(s.pairDivergence);
+    sum.contrast = maxLane(s.contrast) > 0.0;
     return sum;
+}
+
+/// Pass 2: the pair sums of particle i over its neighbours inside the support. Where the
+/// build has AVX, four neighbours at a time over the `padded` entries (the padding's null
+/// pairs add nothing), each lane summing its own share; otherwise one at a time. Either way
+/// the order of the sums is fixed by the row, so the same build gives the same sums whatever
+/// the thread count.
+template <class Shape, bool kArtificialStress, bool kAxi, bool kMirrored>
+HVI_INLINE PairSums sumPairs(const PairData& di, const PairData* pd, const InsideNeighbours& inside,
+                             std::size_t count, std::size_t padded, double ownPerMass,
+                             const PairCoefficients& c) {
+#if HVI_HAVE_LANES4
+    (void)count;
+    PairAccumulators<Lanes4> s;
+    for (std::size_t k = 0; k < padded; k += kPairLanes) {
+        addPair<Shape, kArtificialStress, kAxi, kMirrored>(s, di, neighboursAt(pd, inside, k),
+                                                           ownPerMass, c);
+    }
+#else
+    (void)padded;
+    PairAccumulators<double> s;
+    for (std::size_t k = 0; k < count; ++k) {
+        addPair<Shape, kArtificialStress, kAxi, kMirrored>(s, di, neighbourAt(pd, inside, k),
+                                                           ownPerMass, c);
+    }
+#endif
+    return reduceLanes(s);
 }
 
 /// sumPairs with the scene's geometry and the particle's mirror flag as compile-time
 /// choices (the mirrored particles are few; the rest carry none of the axial-excess sums).
 template <class Shape, bool kArtificialStress>
 HVI_INLINE PairSums sumPairsOf(bool axi, bool mirrored, const PairData& di, const PairData* pd,
-                               const InsideNeighbours& inside, std::size_t padded,
-                               double ownPerMass, const PairCoefficients& c) {
+                               const InsideNeighbours& inside, std::size_t count,
+                               std::size_t padded, double ownPerMass, const PairCoefficients& c) {
     if (!axi) {
-        return sumPairs<Shape, kArtificialStress, false, false>(di, pd, inside, padded,
+        return sumPairs<Shape, kArtificialStress, false, false>(di, pd, inside, count, padded,
                                                                 ownPerMass, c);
     }
     if (mirrored) {
-        return sumPairs<Shape, kArtificialStress, true, true>(di, pd, inside, padded, ownPerMass,
-                                                              c);
+        return sumPairs<Shape, kArtificialStress, true, true>(di, pd, inside, count, padded,
+                                                              ownPerMass, c);
     }
-    return sumPairs<Shape, kArtificialStress, true, false>(di, pd, inside, padded, ownPerMass,
-                                                           c);
+    return sumPairs<Shape, kArtificialStress, true, false>(di, pd, inside, count, padded,
+                                                           ownPerMass, c);
 }
 
 /// Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
@@ -417,8 +488,8 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             // A mirror image is among the neighbours (ghosts come last in a row).
             const bool mirrored = count > 0 && inside.sign[count - 1] < 0.0;
             const double ownPerMass = axi ? inv2Pi / di.r : 1.0; // w_own = m_j / (2 pi r_i)
-            PairSums sum = sumPairsOf<Shape, kArtificialStress>(
-                axi, mirrored, di, pd, inside, padded, ownPerMass, coeff);
+            PairSums sum = sumPairsOf<Shape, kArtificialStress>(axi, mirrored, di, pd, inside,
+                                                                count, padded, ownPerMass, coeff);
             correctGradient(sum);
             const double hoopRate =
                 axi ? addHoopTerms(sum, ps, static_cast<std::size_t>(i), di, strength, mirrored)

@@ -61,8 +61,7 @@ TEST(SphHydroPairs, CountsTheSupportsPairsAndTheirPadding) {
         for (int ir = 0; ir < 9; ++ir) {
             const double jitter = 0.1 * kH * std::sin(1.7 * iz + 2.3 * ir);
             const double h = kH * (1.0 + 0.3 * std::cos(0.9 * iz - 1.1 * ir));
-            ps.add(iz * 0.8 * kH + jitter, ir * 0.8 * kH - jitter, 0.0, 0.0, 1e-3, h, 2.7, 0.0,
-                   0);
+            ps.add(iz * 0.8 * kH + jitter, ir * 0.8 * kH - jitter, 0.0, 0.0, 1e-3, h, 2.7, 0.0, 0);
         }
     }
     std::size_t inside = 0, computed = 0;
