@@ -2,7 +2,7 @@
 // a lane type: `double` (one value, a plain or `omp simd` loop) or `Lanes4` (four, where the
 // build has AVX, HVI_HAVE_LANES4). The arithmetic is IEEE double in each lane, as the scalar
 // code's; what differs between the two is only the order of the sums a loop reduces.
-// The free functions (select, maxOf, minOf, sqrtOf, sumOf) exist for both types, so a
+// The free functions (selectLess, maxOf, sqrtOf, sumOf) exist for both types, so a
 // function template over the lane type compiles unchanged for either.
 #pragma once
 
