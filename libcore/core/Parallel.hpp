@@ -4,7 +4,11 @@
 // on this: every parallel loop computes each item independently (docs/formulation.md).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <omp.h>
+#include <vector>
 
 namespace hvi {
 
@@ -30,6 +34,48 @@ void parallelFor(std::size_t count, Body&& body) {
     } else {
         for (std::size_t k = 0; k < count; ++k) {
             body(k);
+        }
+    }
+}
+
+/// The indices k in [0, count) with keep(k), ascending, into `out` (resized to fit): each
+/// thread counts and then writes its own contiguous block, so the result is the serial one at
+/// any thread count. Threaded above kParallelMinItems.
+template <class Keep>
+void compactIndices(std::size_t count, Keep&& keep, std::vector<int32_t>& out) {
+    if (count <= kParallelMinItems) {
+        out.clear();
+        for (std::size_t k = 0; k < count; ++k) {
+            if (keep(k)) {
+                out.push_back(static_cast<int32_t>(k));
+            }
+        }
+        return;
+    }
+    std::vector<std::size_t> start(static_cast<std::size_t>(omp_get_max_threads()) + 1, 0);
+#pragma omp parallel
+    {
+        const auto t = static_cast<std::size_t>(omp_get_thread_num());
+        const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+        const std::size_t lo = count * t / threads, hi = count * (t + 1) / threads;
+        std::size_t kept = 0;
+        for (std::size_t k = lo; k < hi; ++k) {
+            kept += keep(k) ? 1 : 0;
+        }
+        start[t + 1] = kept;
+#pragma omp barrier
+#pragma omp single
+        {
+            for (std::size_t u = 0; u < threads; ++u) {
+                start[u + 1] += start[u];
+            }
+            out.resize(start[threads]);
+        }
+        std::size_t at = start[t];
+        for (std::size_t k = lo; k < hi; ++k) {
+            if (keep(k)) {
+                out[at++] = static_cast<int32_t>(k);
+            }
         }
     }
 }

@@ -1,6 +1,7 @@
 #include "solver/DeletionRule.hpp"
 
 #include "core/Error.hpp"
+#include "core/Parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -43,7 +44,24 @@ std::size_t deleteParticles(sph::ParticleSet& ps, const std::vector<int32_t>* it
                             Ledger& ledger) {
     std::size_t deleted = 0;
     const std::size_t n = items ? items->size() : ps.size();
+    // Deletions are rare: a threaded scan finds the first item that asks for one (or is not
+    // finite), and the booking, whose sums are order-dependent, runs from there in order.
+    std::size_t first = n;
+#pragma omp parallel for schedule(static) if (n > kParallelMinItems) reduction(min : first)
     for (std::size_t a = 0; a < n; ++a) {
+        const std::size_t i = items ? static_cast<std::size_t>((*items)[a]) : a;
+        if (!ps.alive[i]) {
+            continue;
+        }
+        const double v2 = ps.vz[i] * ps.vz[i] + ps.vr[i] * ps.vr[i];
+        const bool finite = std::isfinite(v2) && std::isfinite(ps.e[i]) &&
+                            std::isfinite(ps.rho[i]) && std::isfinite(ps.z[i]) &&
+                            std::isfinite(ps.r[i]);
+        if (!finite || rule.reason(ps.z[i], ps.r[i], v2)) {
+            first = std::min(first, a);
+        }
+    }
+    for (std::size_t a = first; a < n; ++a) {
         const std::size_t i = items ? static_cast<std::size_t>((*items)[a]) : a;
         if (!ps.alive[i]) {
             continue;

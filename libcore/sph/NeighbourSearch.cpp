@@ -161,13 +161,10 @@ void selectActive(const ParticleSet& ps, NeighbourList& list, const std::vector<
         }
     }
     hot = dilate(hot, st.nz, st.nr, st.reachCells);
-    for (std::size_t k = 0; k < rows; ++k) {
-        const int32_t i = list.listed[k];
-        if (hot[st.cell[i]]) {
-            list.active.push_back(i);
-            list.row.push_back(static_cast<int32_t>(k));
-        }
-    }
+    compactIndices(
+        rows, [&](std::size_t k) { return hot[st.cell[list.listed[k]]] != 0; }, list.row);
+    list.active.resize(list.row.size());
+    parallelFor(list.row.size(), [&](std::size_t a) { list.active[a] = list.listed[list.row[a]]; });
 }
 
 void build(const ParticleSet& ps, const NeighbourSearchOptions& options, NeighbourList& list,
@@ -245,8 +242,7 @@ double medianAliveH(const ParticleSet& ps) {
 void startBuild(const ParticleSet& ps, const NeighbourSearchOptions& options, NeighbourList& list) {
     const std::size_t n = ps.size();
     list.listed.clear();
-    list.neighbours.clear();
-    list.offset.assign(1, 0);
+    list.offset.assign(1, 0); // the rows (buildRows resizes `neighbours` in place)
     auto& st = list.build;
     st.z = ps.z;
     st.r = ps.r;
@@ -426,34 +422,40 @@ void findRow(const ParticleSet& ps, const NeighbourList& list, const BuildGrid& 
 }
 
 /// Neighbour rows of the listed particles. Each thread takes a contiguous block of the listed
-/// particles (static schedule) and the blocks are joined in order; each row is sorted, so it
-/// depends neither on the cells nor on the thread count.
+/// particles (static schedule) into its own scratch and then copies it to the block's place
+/// in the joined list; each row is sorted, so it depends neither on the cells nor on the
+/// thread count.
 void buildRows(const ParticleSet& ps, const BuildGrid& g, double kappa, double hMax, double skin,
                NeighbourList& list) {
     const std::size_t listedCount = list.listed.size();
-    const int threads = omp_get_max_threads();
-    std::vector<std::vector<int32_t>> threadNeighbours(threads);
-    std::vector<int64_t> counts(listedCount, 0);
+    auto& scratch = list.build.threadRows;
+    scratch.resize(std::max<std::size_t>(scratch.size(), omp_get_max_threads()));
+    list.offset.assign(listedCount + 1, 0);
 #pragma omp parallel if (listedCount > kParallelMinHeavyItems)
     {
-        // Filled privately and handed over at the end: pushing into the shared vector of
-        // vectors would make the threads write one cache line (their vectors' headers).
-        std::vector<int32_t> local;
+        // Private rows, handed over at the end: pushing into one shared vector would make the
+        // threads write one cache line.
+        std::vector<int32_t>& local = scratch[static_cast<std::size_t>(omp_get_thread_num())];
+        local.clear();
+        std::size_t first = listedCount; // this thread's first row
 #pragma omp for schedule(static)
         for (std::size_t a = 0; a < listedCount; ++a) {
+            first = std::min(first, a);
             const std::size_t before = local.size();
             findRow(ps, list, g, list.listed[a], kappa, hMax, skin, local);
-            counts[a] = static_cast<int64_t>(local.size() - before);
+            list.offset[a + 1] = static_cast<int64_t>(local.size() - before);
         }
-        threadNeighbours[omp_get_thread_num()] = std::move(local);
-    }
-    list.offset.assign(listedCount + 1, 0);
-    for (std::size_t a = 0; a < listedCount; ++a) {
-        list.offset[a + 1] = list.offset[a] + counts[a];
-    }
-    list.neighbours.reserve(list.offset[listedCount]);
-    for (const auto& local : threadNeighbours) {
-        list.neighbours.insert(list.neighbours.end(), local.begin(), local.end());
+#pragma omp single
+        {
+            for (std::size_t a = 0; a < listedCount; ++a) {
+                list.offset[a + 1] += list.offset[a];
+            }
+            list.neighbours.resize(static_cast<std::size_t>(list.offset[listedCount]));
+        }
+        if (!local.empty()) {
+            std::copy(local.begin(), local.end(),
+                      list.neighbours.begin() + static_cast<std::ptrdiff_t>(list.offset[first]));
+        }
     }
 }
 
@@ -462,6 +464,7 @@ void build(const ParticleSet& ps, const NeighbourSearchOptions& options, Neighbo
     startBuild(ps, options, list);
     const Extent extent = aliveExtent(ps);
     if (extent.hMax <= 0.0) {
+        list.neighbours.clear();
         return;
     }
     const double support = options.kernelSupport * extent.hMax;

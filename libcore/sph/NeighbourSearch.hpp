@@ -71,6 +71,8 @@ struct NeighbourListBuildState {
     double skin = 0.0;             ///< [mm]
     bool valid = false;
     long builds = 0, reuses = 0;   ///< counters (diagnostics and tests)
+    /// Each thread's rows during a build: scratch, kept between builds for its capacity.
+    std::vector<std::vector<int32_t>> threadRows;
 };
 
 struct NeighbourList {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
+#include <omp.h>
 
 using namespace hvi;
 using nlohmann::json;
@@ -141,4 +142,40 @@ TEST(DeletionRule, NonFiniteStateNamesThePoint) {
         EXPECT_NE(what.find("particle 1 of body 'projectile'"), std::string::npos) << what;
         EXPECT_NE(what.find("step 7"), std::string::npos) << what;
     }
+}
+
+// Above the threading threshold (core/Parallel.hpp) the pass scans on two threads for the
+// first point to delete and books from there in order: the same points go and the ledger
+// holds the same bits as on one thread, wherever the deletions fall.
+TEST(DeletionRule, ThreadedScanDeletesTheSamePointsInTheSameOrder) {
+    const auto scene = sphereOnPlate();
+    const auto rule = solver::DeletionRule::of(scene);
+    auto many = [] {
+        sph::ParticleSet ps;
+        for (int k = 0; k < 9000; ++k) {
+            const bool runaway = k == 4321 || k == 8998;
+            const bool outside = k == 6000 || k == 8999;
+            ps.add(outside ? 9.0 : 1.0, 0.5 + 1e-4 * k, runaway ? 13.0 + 1e-3 * k : 1.0, 0.0,
+                   1.0 + 1e-5 * k, 0.1, 2.7, 0.1, 0);
+        }
+        return ps;
+    };
+    solver::Ledger::Account accounts[2];
+    std::vector<uint8_t> alive[2];
+    for (const int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        auto ps = many();
+        solver::Ledger ledger;
+        EXPECT_EQ(solver::deleteParticles(ps, nullptr, rule, scene, {0.5, 7}, ledger), 4u);
+        accounts[threads - 1] = ledger.account();
+        alive[threads - 1] = ps.alive;
+    }
+    omp_set_num_threads(1);
+    EXPECT_EQ(alive[0], alive[1]);
+    EXPECT_EQ(accounts[1].runaway, 2u);
+    EXPECT_EQ(accounts[1].outOfDomain, 2u);
+    EXPECT_EQ(accounts[0].deletedEnergy, accounts[1].deletedEnergy);
+    EXPECT_EQ(accounts[0].deletedMass, accounts[1].deletedMass);
+    EXPECT_EQ(accounts[0].deletedMomentumZ, accounts[1].deletedMomentumZ);
+    EXPECT_EQ(alive[1][4321] + alive[1][6000] + alive[1][8998] + alive[1][8999], 0);
 }
