@@ -4,7 +4,6 @@
 // on this: every parallel loop computes each item independently (docs/formulation.md).
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <omp.h>

@@ -39,42 +39,57 @@ namespace {
 
 } // namespace
 
+namespace {
+
+/// |v|^2 of particle i [km^2/s^2] and whether its state is finite.
+struct ParticleCheck {
+    double v2 = 0.0;
+    bool finite = true;
+};
+
+ParticleCheck checkParticle(const sph::ParticleSet& ps, std::size_t i) {
+    const double v2 = ps.vz[i] * ps.vz[i] + ps.vr[i] * ps.vr[i];
+    return {v2, std::isfinite(v2) && std::isfinite(ps.e[i]) && std::isfinite(ps.rho[i]) &&
+                    std::isfinite(ps.z[i]) && std::isfinite(ps.r[i])};
+}
+
+} // namespace
+
 std::size_t deleteParticles(sph::ParticleSet& ps, const std::vector<int32_t>* items,
                             const DeletionRule& rule, const scene::Scene& scene, RunClock clock,
                             Ledger& ledger) {
     std::size_t deleted = 0;
     const std::size_t n = items ? items->size() : ps.size();
+    auto particleOf = [&](std::size_t a) {
+        return items ? static_cast<std::size_t>((*items)[a]) : a;
+    };
     // Deletions are rare: a threaded scan finds the first item that asks for one (or is not
     // finite), and the booking, whose sums are order-dependent, runs from there in order.
     std::size_t first = n;
 #pragma omp parallel for schedule(static) if (n > kParallelMinItems) reduction(min : first)
     for (std::size_t a = 0; a < n; ++a) {
-        const std::size_t i = items ? static_cast<std::size_t>((*items)[a]) : a;
+        const std::size_t i = particleOf(a);
         if (!ps.alive[i]) {
             continue;
         }
-        const double v2 = ps.vz[i] * ps.vz[i] + ps.vr[i] * ps.vr[i];
-        const bool finite = std::isfinite(v2) && std::isfinite(ps.e[i]) &&
-                            std::isfinite(ps.rho[i]) && std::isfinite(ps.z[i]) &&
-                            std::isfinite(ps.r[i]);
-        if (!finite || rule.reason(ps.z[i], ps.r[i], v2)) {
+        const ParticleCheck c = checkParticle(ps, i);
+        if (!c.finite || rule.reason(ps.z[i], ps.r[i], c.v2)) {
             first = std::min(first, a);
         }
     }
     for (std::size_t a = first; a < n; ++a) {
-        const std::size_t i = items ? static_cast<std::size_t>((*items)[a]) : a;
+        const std::size_t i = particleOf(a);
         if (!ps.alive[i]) {
             continue;
         }
-        const double v2 = ps.vz[i] * ps.vz[i] + ps.vr[i] * ps.vr[i];
-        if (!std::isfinite(v2) || !std::isfinite(ps.e[i]) || !std::isfinite(ps.rho[i]) ||
-            !std::isfinite(ps.z[i]) || !std::isfinite(ps.r[i])) {
+        const ParticleCheck c = checkParticle(ps, i);
+        if (!c.finite) {
             nonFinite("particle", i, ps.body[i], scene, clock,
                       "try a smaller cfl or a larger min_density_ratio");
         }
-        if (const auto why = rule.reason(ps.z[i], ps.r[i], v2)) {
+        if (const auto why = rule.reason(ps.z[i], ps.r[i], c.v2)) {
             ps.alive[i] = 0;
-            ledger.remove(ps.mass[i], ps.vz[i], 0.5 * v2 + ps.e[i], *why);
+            ledger.remove(ps.mass[i], ps.vz[i], 0.5 * c.v2 + ps.e[i], *why);
             ++deleted;
         }
     }
