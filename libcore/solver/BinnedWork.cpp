@@ -1,6 +1,10 @@
 #include "solver/BinnedWork.hpp"
 
+#include "core/Parallel.hpp"
+
+#include <array>
 #include <cmath>
+#include <cstddef>
 
 namespace hvi::solver {
 
@@ -18,11 +22,26 @@ void BinnedWork::add(std::span<const double> pointSteps, double smallestStep) {
     if (!(smallestStep > 0.0) || !std::isfinite(smallestStep)) {
         return;
     }
-    double binned = 0.0;
-    for (const double step : pointSteps) {
-        binned += std::ldexp(1.0, -binOf(step / smallestStep));
+    // A count per bin, summed as integers: exact, so any thread count gives the same sum.
+    std::array<std::size_t, kMaxBin + 1> count{};
+    const std::size_t n = pointSteps.size();
+#pragma omp parallel if (n > kParallelMinItems)
+    {
+        std::array<std::size_t, kMaxBin + 1> local{};
+#pragma omp for schedule(static) nowait
+        for (std::size_t k = 0; k < n; ++k) {
+            ++local[static_cast<std::size_t>(binOf(pointSteps[k] / smallestStep))];
+        }
+#pragma omp critical(hviBinnedWorkCount)
+        for (std::size_t b = 0; b <= kMaxBin; ++b) {
+            count[b] += local[b];
+        }
     }
-    m_evaluated += static_cast<double>(pointSteps.size());
+    double binned = 0.0;
+    for (std::size_t b = 0; b <= kMaxBin; ++b) {
+        binned += std::ldexp(static_cast<double>(count[b]), -static_cast<int>(b));
+    }
+    m_evaluated += static_cast<double>(n);
     m_binned += binned;
 }
 

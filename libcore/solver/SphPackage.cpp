@@ -65,7 +65,7 @@ SphPackage::SphPackage(const scene::Scene& scene, ParticleState& points,
 void SphPackage::kick(double dt) {
     const HalfStep::Lanes lanes = m_points.lanes();
     const double half = 0.5 * dt;
-    forEachEvolving(m_points, [&](std::size_t i) { lanes.kick(i, half); });
+    lanes.kick(m_points.evolving.items(), m_points.set.alive, half);
 }
 
 void SphPackage::drift(double dt) {
@@ -86,9 +86,10 @@ void SphPackage::drift(double dt) {
                 vrHalf[i] = std::fabs(vrHalf[i]);
             }
         }
-        // The end-of-step prediction with the rates of the start.
-        lanes.predict(i, half);
     });
+    // The end-of-step prediction with the rates of the start (after the reflection, which
+    // turns the half-step v_r it starts from).
+    lanes.predict(m_points.evolving.items(), ps.alive, half);
 }
 
 void SphPackage::evaluate(double /*dt*/) {
@@ -102,8 +103,8 @@ void SphPackage::kickAgain(double dt) {
     const HalfStep::Lanes lanes = m_points.lanes();
     const auto& bodies = m_materials.bodies();
     const double half = 0.5 * dt;
+    lanes.predict(m_points.evolving.items(), ps.alive, half);
     forEachEvolving(m_points, [&](std::size_t i) {
-        lanes.predict(i, half);
         // Density stays within sane bounds: an expanding fragment's density falls under the
         // stress cut-off long before it nears zero, and no particle is compressed beyond its
         // equation of state's range (densityCeiling()).

@@ -287,7 +287,10 @@ struct BuildGrid {
     std::vector<int64_t> cellOfExt; ///< per extended index (-1: not alive)
     std::vector<int64_t> start;     ///< CSR offsets, nz * nr + 1
     std::vector<int32_t> members;   ///< extended indices, ascending per cell
-    std::vector<double> hMax;       ///< per cell
+    /// z, signed r and h of each member, in the members' order: a search streams through
+    /// its cells' positions instead of gathering them through `source`.
+    std::vector<double> memberZ, memberR, memberH;
+    std::vector<double> hMax; ///< per cell
 
     int64_t cellCount() const { return nz * nr; }
     int64_t cellOf(double zz, double rr) const {
@@ -338,6 +341,16 @@ BuildGrid makeGrid(const ParticleSet& ps, const NeighbourSearchOptions& options,
     binByCell(
         nExt, static_cast<std::size_t>(cellCount), [&](std::size_t j) { return g.cellOfExt[j]; },
         g.start, g.members);
+    g.memberZ.resize(g.members.size());
+    g.memberR.resize(g.members.size());
+    g.memberH.resize(g.members.size());
+    parallelFor(g.members.size(), [&](std::size_t k) {
+        const int32_t j = g.members[k];
+        const int32_t s = list.source[j];
+        g.memberZ[k] = ps.z[s];
+        g.memberR[k] = list.sign[j] * ps.r[s];
+        g.memberH[k] = ps.h[s];
+    });
     g.hMax.assign(static_cast<std::size_t>(cellCount), 0.0);
     for (std::size_t j = 0; j < nExt; ++j) {
         if (g.cellOfExt[j] >= 0) {
@@ -381,8 +394,8 @@ void selectListed(const ParticleSet& ps, const NeighbourSearchOptions& options,
 }
 
 /// Appends to `out` the extended particles within kappa h_ij + skin of particle i, ascending.
-void findRow(const ParticleSet& ps, const NeighbourList& list, const BuildGrid& g, int32_t i,
-             double kappa, double hMax, double skin, std::vector<int32_t>& out) {
+void findRow(const ParticleSet& ps, const BuildGrid& g, int32_t i, double kappa, double hMax,
+             double skin, std::vector<int32_t>& out) {
     const double zi = ps.z[i], ri = ps.r[i], hi = ps.h[i];
     const int64_t c = g.cellOfExt[i];
     const int64_t iz = c / g.nr, ir = c % g.nr;
@@ -408,10 +421,9 @@ void findRow(const ParticleSet& ps, const NeighbourList& list, const BuildGrid& 
                 if (j == i) {
                     continue;
                 }
-                const int32_t s = list.source[j];
-                const double dz = zi - ps.z[s];
-                const double dr = ri - list.sign[j] * ps.r[s];
-                const double reach = kappa * 0.5 * (hi + ps.h[s]) + skin;
+                const double dz = zi - g.memberZ[k];
+                const double dr = ri - g.memberR[k];
+                const double reach = kappa * 0.5 * (hi + g.memberH[k]) + skin;
                 if (dz * dz + dr * dr < reach * reach) {
                     out.push_back(j);
                 }
@@ -442,7 +454,7 @@ void buildRows(const ParticleSet& ps, const BuildGrid& g, double kappa, double h
         for (std::size_t a = 0; a < listedCount; ++a) {
             first = std::min(first, a);
             const std::size_t before = local.size();
-            findRow(ps, list, g, list.listed[a], kappa, hMax, skin, local);
+            findRow(ps, g, list.listed[a], kappa, hMax, skin, local);
             list.offset[a + 1] = static_cast<int64_t>(local.size() - before);
         }
 #pragma omp single

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <limits>
+#include <omp.h>
 #include <vector>
 
 using hvi::solver::BinnedWork;
@@ -39,4 +40,29 @@ TEST(BinnedWork, CountsTheEvaluationsOfEachBin) {
     EXPECT_DOUBLE_EQ(work.evaluated(), 8.0);
     EXPECT_DOUBLE_EQ(work.binned(), expected + 1.0);
     EXPECT_DOUBLE_EQ(BinnedWork{}.fraction(), 1.0);
+}
+
+TEST(BinnedWork, ManyPointsAtAnyThreadCount) {
+    // Above the threading threshold: the counts per bin are integers, so one and two threads
+    // give the same sum bit for bit, and it equals the sum worked per point.
+    std::vector<double> steps;
+    for (int k = 0; k < 50000; ++k) {
+        steps.push_back(1.0 + 0.37 * static_cast<double>(k % 200)); // ratios 1 to 74.6
+    }
+    double expected = 0.0;
+    for (const double s : steps) {
+        expected += 1.0 / static_cast<double>(1 << BinnedWork::binOf(s));
+    }
+    std::vector<double> sums;
+    for (const int threads : {1, 2}) {
+        const int before = omp_get_max_threads();
+        omp_set_num_threads(threads);
+        BinnedWork work;
+        work.add(steps, 1.0);
+        omp_set_num_threads(before);
+        EXPECT_DOUBLE_EQ(work.evaluated(), 50000.0);
+        EXPECT_NEAR(work.binned(), expected, 1e-9 * expected);
+        sums.push_back(work.binned());
+    }
+    EXPECT_EQ(sums[0], sums[1]);
 }
