@@ -45,7 +45,9 @@ SETUP := $(if $(END_TIME_US),to $(END_TIME_US) µs,to the scene rule's end time)
 HVI_VALIDATE := $(BIN)/hvi-validate/hvi-validate
 
 .PHONY: convergence
-.SECONDARY:
+# Keep each point's inputs, scene and run file (not .SECONDARY for everything: that makes
+# every target intermediate, and a point missing under a newer report was never made).
+.PRECIOUS: $(OUT)/%/panel.json $(OUT)/%/scene.json $(OUT)/%/run.h5
 .DELETE_ON_ERROR:
 
 POINTS := $(foreach h,$(SPACINGS),$(OUT)/s$(h)/verdict.json)

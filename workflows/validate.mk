@@ -68,7 +68,9 @@ COMPARE_FLAGS := $(if $(VARIANT),,$(foreach d,$(OTHER_KEPT),--compare-kept $(d))
   $(foreach d,$(VARIANTS_KEPT),--sensitivity-kept $(d)))
 
 .PHONY: validate validate-ble validate-keep validate-forget slurm-validate
-.SECONDARY:
+# Keep each case's inputs, scene and run file (not .SECONDARY for everything: that makes
+# every target intermediate, and a verdict missing under a newer report was never made).
+.PRECIOUS: $(OUT)/%/panel.json $(OUT)/%/scene.json $(OUT)/%/run.h5
 .DELETE_ON_ERROR:
 
 validate: $(REPORT)

@@ -121,6 +121,14 @@ TEST(HviValidateWorkflow, CiSetRunsEndToEndThroughTheMakefile) {
                               toolPath("hvi-run").parent_path().parent_path().string() +
                               " OUT=" + out.string() + " >/dev/null 2>&1";
     EXPECT_EQ(std::system(again.c_str()), 0);
+    // A case whose verdict is missing is made again, though the report is newer than all the
+    // inputs (with every target secondary, make took the verdict for an intermediate file and
+    // left it unmade).
+    const fs::path verdict = out / "A1076" / "verdict.json";
+    const fs::path aside = out / "A1076" / "verdict.json.aside";
+    fs::rename(verdict, aside);
+    EXPECT_NE(std::system(again.c_str()), 0) << "make -q found nothing to do without a verdict";
+    fs::rename(aside, verdict);
 
     // Kept verdicts stand for their runs: copied out, the case directory's run and verdict
     // removed, the next make takes the kept verdict and runs nothing.
