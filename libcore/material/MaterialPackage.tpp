@@ -136,17 +136,25 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
             const material::MaterialSpec& spec = *body.spec;
             const double tStar = spec.thermal ? spec.thermal->homologousFromEnergy(ps.e[i]) : 0.0;
             const double rate = rates.strainRate[i];
-            const double yield = std::visit(
+            const double dEps = std::visit(
                 [&](const auto& model) -> double {
                     using M = std::decay_t<decltype(model)>;
                     if constexpr (std::is_same_v<M, material::NoStrength>) {
-                        return 0.0;
+                        return material::radialReturn(s, 0.0, spec.shearModulus);
                     } else {
-                        return model.flowStress(ps.plasticStrain[i], rate, tStar);
+                        // Under the flow stress's floor the point is elastic, which is what
+                        // the radial return would find: the flow stress is not needed.
+                        const double floor = model.flowStressFloor(tStar);
+                        if (floor > 0.0 && ps.plasticStrain[i] >= 0.0 && rate >= 0.0 &&
+                            s.vonMises() <= floor) {
+                            return 0.0;
+                        }
+                        return material::radialReturn(
+                            s, model.flowStress(ps.plasticStrain[i], rate, tStar),
+                            spec.shearModulus);
                     }
                 },
                 spec.strength);
-            const double dEps = material::radialReturn(s, yield, spec.shearModulus);
             if (dEps > 0.0) {
                 std::visit(
                     [&](const auto& model) {

@@ -58,6 +58,20 @@ struct JohnsonCookStrength {
         return 1.0 - std::pow(homologousTemperature, thermalExponent);
     }
 
+    /// A flow stress [GPa] that flowStress() does not fall below at this T* for any plastic
+    /// strain >= 0 and strain rate >= 0: A (1 - T*) where B >= 0, C >= 0 and m >= 1 (then the
+    /// hardening is at least A, the rate factor at least 1, and T*^m <= T*; each holds for
+    /// the rounded factors too, since rounding is monotonic), otherwise 0 (no bound). A point
+    /// whose von Mises stress stays under it is elastic without the powers and the logarithm
+    /// the flow stress costs.
+    double flowStressFloor(double homologousTemperature) const noexcept {
+        if (!(yieldStress > 0.0 && hardeningModulus >= 0.0 && strainRateCoefficient >= 0.0 &&
+              thermalExponent >= 1.0 && homologousTemperature < 1.0)) {
+            return 0.0; // a NaN T* too
+        }
+        return yieldStress * (1.0 - std::max(homologousTemperature, 0.0));
+    }
+
     /// Flow stress Y [GPa] at equivalent plastic strain, equivalent strain rate [1/us] and T*.
     double flowStress(double plasticStrain, double strainRatePerUs,
                       double homologousTemperature) const noexcept {

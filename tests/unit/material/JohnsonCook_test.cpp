@@ -61,3 +61,29 @@ TEST(JohnsonCookStrength, NegativePlasticStrainReadsAsZeroAndNanPropagates) {
     EXPECT_TRUE(std::isnan(kAl.flowStress(std::nan(""), 1.0, 0.0)));
     EXPECT_TRUE(std::isnan(kAl.flowStress(0.1, std::nan(""), 0.0)));
 }
+
+TEST(JohnsonCookStrength, FlowStressNeverFallsBelowItsFloor) {
+    // The floor A (1 - T*) lets the material update skip the flow stress of a point that is
+    // elastic for certain, so it must hold at every state, to the bit, for m = 1 (where
+    // 1 - T*^m equals it) and m > 1, and be 0 (no bound) where it cannot hold.
+    for (const double m : {1.0, 1.03, 1.34, 1.7}) {
+        JohnsonCookStrength jc = kAl;
+        jc.thermalExponent = m;
+        for (const double t : {-0.2, 0.0, 1e-9, 0.1, 0.37, 0.5, 0.93, 0.999999}) {
+            const double floor = jc.flowStressFloor(t);
+            EXPECT_GT(floor, 0.0) << "m " << m << " T* " << t;
+            for (const double eps : {0.0, 1e-12, 0.01, 0.3, 2.0}) {
+                for (const double rate : {0.0, kQuasiStatic, 1e-3, 1.0, 50.0}) {
+                    EXPECT_LE(floor, jc.flowStress(eps, rate, t))
+                        << "m " << m << " T* " << t << " eps " << eps << " rate " << rate;
+                }
+            }
+        }
+        EXPECT_EQ(jc.flowStressFloor(1.0), 0.0);
+        EXPECT_EQ(jc.flowStressFloor(std::nan("")), 0.0);
+    }
+    JohnsonCookStrength soft = kAl;
+    soft.thermalExponent = 0.8; // T*^m > T*: no cheap bound
+    EXPECT_EQ(soft.flowStressFloor(0.5), 0.0);
+    EXPECT_DOUBLE_EQ(kAl.flowStressFloor(0.0), 0.2896);
+}
