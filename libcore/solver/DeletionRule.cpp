@@ -37,10 +37,6 @@ namespace {
                          hint + ")");
 }
 
-} // namespace
-
-namespace {
-
 /// |v|^2 of particle i [km^2/s^2] and whether its state is finite.
 struct ParticleCheck {
     double v2 = 0.0;
