@@ -2,7 +2,7 @@
 // a lane type: `double` (one value, a plain or `omp simd` loop) or `Lanes4` (four, where the
 // build has AVX, HVI_HAVE_LANES4). The arithmetic is IEEE double in each lane, as the scalar
 // code's; what differs between the two is only the order of the sums a loop reduces.
-// The free functions (selectLess, maxOf, sqrtOf, sumOf) exist for both types, so a
+// The free functions (selectLess, anyLess, maxOf, sqrtOf, sumOf) exist for both types, so a
 // function template over the lane type compiles unchanged for either.
 #pragma once
 
@@ -21,6 +21,10 @@ namespace hvi {
 /// a < b ? x : y, without a branch.
 inline double selectLess(double a, double b, double x, double y) {
     return a < b ? x : y;
+}
+/// Whether a < b (in any lane).
+inline bool anyLess(double a, double b) {
+    return a < b;
 }
 inline double maxOf(double a, double b) {
     return std::max(a, b);
@@ -93,6 +97,10 @@ inline Lanes4 operator/(double a, Lanes4 b) {
 /// Lane by lane: a < b ? x : y (ordered, quiet: a NaN compares false, as in the scalar code).
 inline Lanes4 selectLess(Lanes4 a, Lanes4 b, Lanes4 x, Lanes4 y) {
     return Lanes4(_mm256_blendv_pd(y.v, x.v, _mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)));
+}
+/// Whether a < b in any lane (ordered: a NaN compares false).
+inline bool anyLess(Lanes4 a, Lanes4 b) {
+    return _mm256_movemask_pd(_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)) != 0;
 }
 /// Lane by lane: a > b ? a : b, as std::max(b, a) for doubles with no NaN.
 inline Lanes4 maxOf(Lanes4 a, Lanes4 b) {

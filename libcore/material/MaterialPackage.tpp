@@ -5,6 +5,7 @@
 
 #include "material/MaterialPackage.hpp"
 
+#include "core/Lanes.hpp"
 #include "core/Parallel.hpp"
 #include "material/strength/JaumannRate.hpp"
 #include "material/strength/RadialReturn.hpp"
@@ -20,42 +21,123 @@ using material::StressDeviator;
 
 namespace detail {
 
-/// p and cs of points [first, last) of `items` (or of the index range itself when `items` is
-/// null) for one body, with its EOS chosen once.
-template <class Points, class Eos>
-void pressureOf(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdiff_t first,
-                std::ptrdiff_t last, const int32_t* items) {
-    const bool hasS = ps.hasStrength();
-    const double shear = body.strength ? body.spec->shearModulus : 0.0;
-    parallelFor(static_cast<std::size_t>(last - first), [&](std::size_t slot) {
-        const auto k = first + static_cast<std::ptrdiff_t>(slot);
-        const auto i = items ? static_cast<std::size_t>(items[k]) : static_cast<std::size_t>(k);
-        if (!ps.alive[i]) {
-            return;
-        }
-        // Below the cut-off density a point is fragmented: it carries no tension. Where the
-        // EOS describes hot expanded states their pressure stays (it falls to zero with the
-        // density, so nothing jumps at the cut-off); otherwise the point carries no stress and
-        // keeps the sound speed of the cut-off density.
-        const bool expanded = ps.rho[i] < body.minDensity;
-        const bool keepsGasPressure = eos.describesExpandedStates();
-        const double rho = keepsGasPressure ? ps.rho[i] : std::max(ps.rho[i], body.minDensity);
-        const material::EosState st = eos.evaluate(rho, ps.e[i]);
-        double p = st.pressure;
-        double c2 = st.soundSpeedSquared;
-        const bool failed = hasS && ps.damage[i] >= 1.0;
+/// The density cut-off and the solid's shear wave on one point's EOS state (p, c2 at density
+/// rho, the cut-off density or above it; `shearTerm` = 4G/(3 rho)), then its p and cs.
+/// Below the cut-off density a point is fragmented: it carries no tension. Where the EOS
+/// describes hot expanded states their pressure stays (it falls to zero with the density, so
+/// nothing jumps at the cut-off); otherwise the point carries no stress and keeps the sound
+/// speed of the cut-off density. A point below the cut-off carries no deviator
+/// (applyPlasticity): with a gas pressure its waves are the gas's alone.
+struct CutOff {
+    bool expanded;
+    bool keepsGasPressure;
+    bool failed;
+    bool solid; ///< the body has a shear modulus
+
+    void apply(double& p, double& c2, double shearTerm) const {
         if (expanded) {
             p = keepsGasPressure ? std::max(p, 0.0) : 0.0;
         } else if (failed && p < 0.0) {
             p = 0.0; // failed material takes no tension
         }
-        // A point below the cut-off carries no deviator (applyPlasticity): with a gas
-        // pressure its waves are the gas's alone.
-        if (shear > 0.0 && !failed && !(expanded && keepsGasPressure)) {
-            c2 += (4.0 / 3.0) * shear / rho;
+        if (solid && !failed && !(expanded && keepsGasPressure)) {
+            c2 += shearTerm;
         }
-        ps.p[i] = p;
-        ps.cs[i] = std::sqrt(std::max(c2, 0.0));
+    }
+};
+
+template <class Points>
+CutOff cutOffOf(const Points& ps, std::size_t i, const BodyMaterial& body, bool keepsGas) {
+    return {ps.rho[i] < body.minDensity, keepsGas, ps.hasStrength() && ps.damage[i] >= 1.0,
+            body.strength && body.spec->shearModulus > 0.0};
+}
+
+inline double shearModulusOf(const BodyMaterial& body) {
+    return body.strength ? body.spec->shearModulus : 0.0;
+}
+
+/// p and cs of point i, one at a time (any EOS).
+template <class Points, class Eos>
+void pressureAt(Points& ps, std::size_t i, const BodyMaterial& body, const Eos& eos) {
+    const bool keepsGas = eos.describesExpandedStates();
+    const double rho = keepsGas ? ps.rho[i] : std::max(ps.rho[i], body.minDensity);
+    const material::EosState st = eos.evaluate(rho, ps.e[i]);
+    double p = st.pressure;
+    double c2 = st.soundSpeedSquared;
+    const CutOff cut = cutOffOf(ps, i, body, keepsGas);
+    cut.apply(p, c2, cut.solid ? (4.0 / 3.0) * shearModulusOf(body) / rho : 0.0);
+    ps.p[i] = p;
+    ps.cs[i] = std::sqrt(std::max(c2, 0.0));
+}
+
+#if HVI_HAVE_LANES4
+/// An EOS that evaluates four points at once where it describes no expanded state.
+template <class Eos>
+concept LaneEos = requires(const Eos& eos, Lanes4 x) { eos.evaluateSolid(x, x); };
+
+/// pressureAt for the points of `index(k)`, k in [first, last), four at a time: the EOS, the
+/// shear term's division and the square root in AVX lanes (the same IEEE operations as
+/// pressureAt, so the same bits), the cut-off lane by lane. For an EOS without expanded states.
+template <class Points, class Eos, class Index>
+void pressureOfLanes(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdiff_t first,
+                     std::ptrdiff_t last, const Index& index) {
+    const std::ptrdiff_t blocks = (last - first) / 4;
+    const double fourThirdsShear = (4.0 / 3.0) * shearModulusOf(body);
+#pragma omp parallel for schedule(static) if (last - first > static_cast<std::ptrdiff_t>(kParallelMinItems))
+    for (std::ptrdiff_t blk = 0; blk < blocks; ++blk) {
+        std::size_t at[4];
+        alignas(32) double rho[4], e[4], p[4], c2[4], shearTerm[4], cs[4];
+        for (std::size_t j = 0; j < 4; ++j) {
+            at[j] = index(first + 4 * blk + static_cast<std::ptrdiff_t>(j));
+            rho[j] = std::max(ps.rho[at[j]], body.minDensity);
+            e[j] = ps.e[at[j]];
+        }
+        const Lanes4 rhoL(_mm256_load_pd(rho));
+        const EosStateOf<Lanes4> st = eos.evaluateSolid(rhoL, Lanes4(_mm256_load_pd(e)));
+        _mm256_store_pd(p, st.pressure.v);
+        _mm256_store_pd(c2, st.soundSpeedSquared.v);
+        _mm256_store_pd(shearTerm, (Lanes4(fourThirdsShear) / rhoL).v);
+        for (std::size_t j = 0; j < 4; ++j) {
+            cutOffOf(ps, at[j], body, false).apply(p[j], c2[j], shearTerm[j]);
+        }
+        _mm256_store_pd(cs, sqrtOf(maxOf(Lanes4(_mm256_load_pd(c2)), Lanes4(0.0))).v);
+        for (std::size_t j = 0; j < 4; ++j) {
+            if (ps.alive[at[j]]) {
+                ps.p[at[j]] = p[j];
+                ps.cs[at[j]] = cs[j];
+            }
+        }
+    }
+    for (std::ptrdiff_t k = first + 4 * blocks; k < last; ++k) {
+        const std::size_t i = index(k);
+        if (ps.alive[i]) {
+            pressureAt(ps, i, body, eos);
+        }
+    }
+}
+#endif
+
+/// p and cs of points [first, last) of `items` (or of the index range itself when `items` is
+/// null) for one body, with its EOS chosen once.
+template <class Points, class Eos>
+void pressureOf(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdiff_t first,
+                std::ptrdiff_t last, const int32_t* items) {
+    const auto index = [items](std::ptrdiff_t k) {
+        return items ? static_cast<std::size_t>(items[k]) : static_cast<std::size_t>(k);
+    };
+#if HVI_HAVE_LANES4
+    if constexpr (LaneEos<Eos>) {
+        if (!eos.describesExpandedStates()) {
+            pressureOfLanes(ps, body, eos, first, last, index);
+            return;
+        }
+    }
+#endif
+    parallelFor(static_cast<std::size_t>(last - first), [&](std::size_t slot) {
+        const std::size_t i = index(first + static_cast<std::ptrdiff_t>(slot));
+        if (ps.alive[i]) {
+            pressureAt(ps, i, body, eos);
+        }
     });
 }
 

@@ -9,6 +9,8 @@
 // for the concrete model; no call per particle goes through a table.
 #pragma once
 
+#include "core/Lanes.hpp"
+
 #include <cstddef>
 #include <span>
 #include <stdexcept>
@@ -16,26 +18,31 @@
 
 namespace hvi::material {
 
-/// Pressure [GPa] and squared adiabatic sound speed [(km/s)^2] at one point.
-struct EosState {
-    double pressure = 0.0;
-    double soundSpeedSquared = 0.0;
+/// Pressure [GPa] and squared adiabatic sound speed [(km/s)^2] at one point, or at four for
+/// L = Lanes4 (core/Lanes.hpp: the same arithmetic in each lane).
+template <class L>
+struct EosStateOf {
+    L pressure = 0.0;
+    L soundSpeedSquared = 0.0;
 };
+using EosState = EosStateOf<double>;
 
 /// One analytic form of an EOS at a point: P and its partial derivatives, from which the
 /// isentropic sound speed follows.
-struct EosBranch {
-    double p;      ///< [GPa]
-    double dPdRho; ///< at constant e [(km/s)^2]
-    double dPdE;   ///< at constant rho [g/cm^3]
+template <class L>
+struct EosBranchOf {
+    L p;      ///< [GPa]
+    L dPdRho; ///< at constant e [(km/s)^2]
+    L dPdE;   ///< at constant rho [g/cm^3]
 
     /// The state, with c^2 = (dP/drho)_e + (P / rho^2) (dP/de)_rho floored at `floor2`
     /// (a NaN c^2 fails the comparison and stays NaN: bad input is not hidden).
-    EosState state(double rho, double floor2) const noexcept {
-        const double c2 = dPdRho + p * dPdE / (rho * rho);
-        return {p, c2 < floor2 ? floor2 : c2};
+    EosStateOf<L> state(L rho, double floor2) const noexcept {
+        const L c2 = dPdRho + p * dPdE / (rho * rho);
+        return {p, selectLess(c2, L(floor2), L(floor2), c2)};
     }
 };
+using EosBranch = EosBranchOf<double>;
 
 /// Tillotson's rule between the incipient and complete vaporisation energies (GA-3216, 1962):
 /// for e in (E_iv, E_cv), P linear in e between the `solid` and `expanded` forms, so P is

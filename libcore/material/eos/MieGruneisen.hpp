@@ -57,6 +57,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string_view>
 
 namespace hvi::material {
@@ -105,35 +106,53 @@ struct MieGruneisen {
         return solid.state(rho, cFloor * cFloor);
     }
 
+    /// The same without the expanded states, for L = double or Lanes4 (four points at once):
+    /// evaluate() wherever describesExpandedStates() is false, to the last bit, since both
+    /// run the one solidBranch.
+    template <class L>
+    EosStateOf<L> evaluateSolid(L rho, L e) const noexcept {
+        const L mu = rho / referenceDensity - 1.0;
+        const double cFloor = soundSpeedFloorFraction * bulkSoundSpeed;
+        return solidBranch(e, mu).state(rho, cFloor * cFloor);
+    }
+
     /// Pressure only [GPa].
     double pressure(double rho, double e) const noexcept { return evaluate(rho, e).pressure; }
 
 private:
-    EosBranch solidBranch(double e, double mu) const noexcept {
+    /// The Hugoniot form, written once for a lane type: the compression and the cap are
+    /// selected lane by lane (a lane in expansion computes the compressed terms and drops them).
+    template <class L>
+    EosBranchOf<L> solidBranch(L e, L mu) const noexcept {
         const double rho0 = referenceDensity;
         const double k = rho0 * bulkSoundSpeed * bulkSoundSpeed; // rho0 c0^2 [GPa]
         const double g0 = gruneisenGamma;
         const double b = volumeCorrection;
 
         // Cold (e-independent) part f(mu) and its derivative df/dmu.
-        double cold = k * mu;
-        double dColdDmu = k;
-        if (mu > 0.0) {
+        L cold = k * mu;
+        L dColdDmu = k;
+        if (anyLess(L(0.0), mu)) {
             const double sm1 = hugoniotSlope - 1.0;
-            const bool capped = sm1 > 0.0 && 1.0 - sm1 * mu < kMinHugoniotDenominator;
-            const double muEval = capped ? (1.0 - kMinHugoniotDenominator) / sm1 : mu;
-            const double d = 1.0 - sm1 * muEval;
-            const double n = 1.0 + (1.0 - 0.5 * g0) * muEval - 0.5 * b * muEval * muEval;
-            const double dn = (1.0 - 0.5 * g0) - b * muEval;
-            const double d2 = d * d;
-            cold = k * muEval * n / d2;
-            dColdDmu = k * ((n + muEval * dn) / d2 + 2.0 * sm1 * muEval * n / (d2 * d));
-            if (capped) {
-                cold += dColdDmu * (mu - muEval);
-            }
+            const double muCap = sm1 > 0.0 ? (1.0 - kMinHugoniotDenominator) / sm1 : 0.0;
+            // capped where sm1 > 0 and 1 - sm1 mu < kMinHugoniotDenominator
+            const L denominator = 1.0 - sm1 * mu;
+            const L limit = sm1 > 0.0 ? L(kMinHugoniotDenominator) : L(-std::numeric_limits<double>::infinity());
+            const L muEval = selectLess(denominator, limit, L(muCap), mu);
+            const L d = 1.0 - sm1 * muEval;
+            const L n = 1.0 + (1.0 - 0.5 * g0) * muEval - 0.5 * b * muEval * muEval;
+            const L dn = (1.0 - 0.5 * g0) - b * muEval;
+            const L d2 = d * d;
+            const L compressedCold = k * muEval * n / d2;
+            const L compressedSlope =
+                k * ((n + muEval * dn) / d2 + 2.0 * sm1 * muEval * n / (d2 * d));
+            const L cappedCold = compressedCold + compressedSlope * (mu - muEval);
+            cold = selectLess(L(0.0), mu, selectLess(denominator, limit, cappedCold, compressedCold),
+                              cold);
+            dColdDmu = selectLess(L(0.0), mu, compressedSlope, dColdDmu);
         }
 
-        const double rhoGamma = rho0 * (g0 + b * mu); // rho Gamma(rho) = (dP/de)_rho
+        const L rhoGamma = rho0 * (g0 + b * mu); // rho Gamma(rho) = (dP/de)_rho
         // (dP/drho)_e = (df/dmu + rho0 b e) / rho0, since dmu/drho = 1/rho0.
         return {cold + rhoGamma * e, (dColdDmu + rho0 * b * e) / rho0, rhoGamma};
     }

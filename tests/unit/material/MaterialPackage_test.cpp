@@ -82,3 +82,73 @@ TEST(MaterialPackageCutOff, WithoutTheBranchAnExpandedPointCarriesNoPressure) {
     EXPECT_EQ(below.cs, std::sqrt(eos.evaluate(cut, 50.0).soundSpeedSquared));
     EXPECT_GT(below.cs, 25.0);
 }
+
+// updatePressure runs the Mie-Grueneisen bodies four points at a time (MaterialPackage.tpp);
+// every point must get the p and cs it gets alone (one point, the one-at-a-time path), the
+// cut-off rules included, and a deleted point keeps what it had. Thirteen points: three full
+// vectors and a tail, with a deleted, failed, expanded and compressed point among them.
+TEST(MaterialPackageCutOff, FourAtATimeGivesEveryPointItsOwnBits) {
+    const auto spec = aluminium(false);
+    const double rho0 = spec.referenceDensity;
+    struct State {
+        double rho, e, damage;
+        bool alive;
+    };
+    const std::vector<State> states = {
+        {rho0, 0.0, 0.0, true},        {1.3 * rho0, 2.0, 0.0, true},
+        {0.95 * rho0, 0.1, 1.0, true}, {0.4 * rho0, 30.0, 0.3, true},
+        {rho0, 0.0, 0.0, false},       {2.1 * rho0, 9.0, 1.0, true},
+        {0.97 * rho0, 0.0, 0.5, true}, {0.45 * rho0, 0.2, 1.0, true},
+        {1.02 * rho0, -0.3, 0.0, true}, {3.6 * rho0, 40.0, 0.0, true},
+        {0.99 * rho0, 1.0, 1.0, true}, {1.6 * rho0, 5.0, 0.2, true},
+        {0.8 * rho0, 0.05, 0.9, true}};
+    const auto package = [&](std::size_t count) {
+        return material::MaterialPackage({{.spec = &spec,
+                                           .strength = true,
+                                           .minDensity = 0.5 * rho0,
+                                           .maxDensity = 2.25 * rho0,
+                                           .first = 0,
+                                           .count = count}});
+    };
+    const auto fill = [](sph::ParticleSet& ps, const State& s) {
+        const std::size_t i = ps.size();
+        ps.add(0.0, 1.0 + static_cast<double>(i), 0.0, 0.0, 1.0, 0.1, s.rho, s.e, 0);
+    };
+    sph::ParticleSet all;
+    for (const State& s : states) {
+        fill(all, s);
+    }
+    all.enableStrength();
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        all.damage[i] = states[i].damage;
+        all.alive[i] = states[i].alive ? 1 : 0;
+        all.p[i] = -7.0; // what a deleted point must keep
+        all.cs[i] = -7.0;
+    }
+    package(states.size()).updatePressure(all);
+    std::vector<int32_t> items(states.size());
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        items[i] = static_cast<int32_t>(i);
+    }
+    sph::ParticleSet listed = all;
+    listed.p.assign(listed.size(), -7.0);
+    listed.cs.assign(listed.size(), -7.0);
+    package(states.size()).updatePressure(listed, items);
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        sph::ParticleSet one;
+        fill(one, states[i]);
+        one.enableStrength();
+        one.damage[0] = states[i].damage;
+        package(1).updatePressure(one);
+        const double p = states[i].alive ? one.p[0] : -7.0;
+        const double cs = states[i].alive ? one.cs[0] : -7.0;
+        EXPECT_EQ(all.p[i], p) << "point " << i;
+        EXPECT_EQ(all.cs[i], cs) << "point " << i;
+        EXPECT_EQ(listed.p[i], p) << "point " << i << " (listed)";
+        EXPECT_EQ(listed.cs[i], cs) << "point " << i << " (listed)";
+    }
+    // The rules were exercised: tension kept, tension cut, the cut-off's zero pressure.
+    EXPECT_LT(all.p[6], 0.0);
+    EXPECT_EQ(all.p[2], 0.0);
+    EXPECT_EQ(all.p[3], 0.0);
+}

@@ -245,3 +245,43 @@ TEST(MieGruneisenExpansion, TendsToTheGasOfGrueneisenParameterAAtLowDensity) {
     EXPECT_TRUE(eos.describesExpandedStates());
     EXPECT_FALSE(al().describesExpandedStates());
 }
+
+#if HVI_HAVE_LANES4
+// The four-lane form that the solver's pressure loop uses (MaterialPackage.tpp) must give each
+// lane the bits of the one-point evaluate(), so that vectorising changes no result: states in
+// expansion, at mu = 0, in compression and beyond the compression cap, mixed in one vector.
+TEST(MieGruneisen, FourLanesGiveTheOnePointBits) {
+    const double rho0 = 2.703;
+    const std::vector<double> ratios = {0.3, 0.62, 0.999, 1.0, 1.0001, 1.2, 1.55, 2.2, 3.4, 3.9};
+    const std::vector<double> energies = {-1.3, 0.0, 0.02, 4.9, 37.0};
+    for (double b : {0.0, 0.48}) {
+        for (double slope : {1.40, 1.0}) { // 1.0: no compression cap
+            MieGruneisen eos = al(b);
+            eos.hugoniotSlope = slope;
+            std::vector<double> rho, e;
+            for (double x : ratios) {
+                for (double en : energies) {
+                    rho.push_back(x * rho0);
+                    e.push_back(en);
+                }
+            }
+            std::size_t compared = 0;
+            for (std::size_t k = 0; k + 4 <= rho.size(); ++k) { // every window of four
+                const auto st = eos.evaluateSolid(hvi::Lanes4(_mm256_loadu_pd(&rho[k])),
+                                                  hvi::Lanes4(_mm256_loadu_pd(&e[k])));
+                alignas(32) double p[4], c2[4];
+                _mm256_store_pd(p, st.pressure.v);
+                _mm256_store_pd(c2, st.soundSpeedSquared.v);
+                for (std::size_t j = 0; j < 4; ++j) {
+                    const EosState one = eos.evaluate(rho[k + j], e[k + j]);
+                    EXPECT_EQ(p[j], one.pressure) << "rho " << rho[k + j] << " e " << e[k + j];
+                    EXPECT_EQ(c2[j], one.soundSpeedSquared)
+                        << "rho " << rho[k + j] << " e " << e[k + j];
+                    ++compared;
+                }
+            }
+            EXPECT_EQ(compared, 4 * (rho.size() - 3));
+        }
+    }
+}
+#endif
