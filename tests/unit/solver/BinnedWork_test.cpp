@@ -3,6 +3,8 @@
 // smallest steps at 2^k times it and costs 2^-k of an evaluation per smallest step.
 #include "solver/BinnedWork.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 #include <limits>
 #include <omp.h>
@@ -21,6 +23,16 @@ TEST(BinnedWork, EachPointStepsAtTheLargestPowerOfTwoNotAboveItsOwnStep) {
     EXPECT_EQ(BinnedWork::binOf(1e9), BinnedWork::kMaxBin);
     EXPECT_EQ(BinnedWork::binOf(std::numeric_limits<double>::infinity()), BinnedWork::kMaxBin);
     EXPECT_EQ(BinnedWork::binOf(0.5), 0); // below the smallest vote (a later vote): bin 0
+    EXPECT_EQ(BinnedWork::binOf(std::nan("")), BinnedWork::kMaxBin);
+    // floor(log2) everywhere between, each power of two and its neighbours included.
+    for (int b = 1; b <= BinnedWork::kMaxBin; ++b) {
+        const double edge = std::ldexp(1.0, b);
+        EXPECT_EQ(BinnedWork::binOf(std::nextafter(edge, 0.0)), b - 1) << "below 2^" << b;
+        EXPECT_EQ(BinnedWork::binOf(edge), b) << "2^" << b;
+    }
+    for (double r = 1.0; r < 64.0; r *= 1.013) {
+        EXPECT_EQ(BinnedWork::binOf(r), std::ilogb(r)) << "ratio " << r;
+    }
 }
 
 TEST(BinnedWork, CountsTheEvaluationsOfEachBin) {
