@@ -34,11 +34,8 @@ public:
     static int binOf(double ratio);
 
 private:
-    static constexpr double kTopRatio = 64.0; ///< 2^kMaxBin
-    static_assert(kTopRatio == double(1 << kMaxBin));
     /// 2^b: the smallest ratio of bin b.
-    static constexpr double kBinRatio[kMaxBin] = {1.0, 2.0, 4.0, 8.0, 16.0, 32.0};
-
+    static constexpr double kBinEdge[kMaxBin + 1] = {1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0};
     double m_evaluated = 0.0;
     double m_binned = 0.0;
 };
