@@ -75,36 +75,53 @@ void pressureAt(Points& ps, std::size_t i, const BodyMaterial& body, const Eos& 
 template <class Eos>
 concept LaneEos = requires(const Eos& eos, Lanes4 x) { eos.evaluateSolid(x, x); };
 
+/// The four values x[at[0..3]] as one vector (built in registers: a vector loaded from four
+/// scalar stores waits for them, which cost a sixth of this loop).
+inline Lanes4 gather4(const double* x, const std::size_t* at) {
+    return Lanes4(_mm256_set_pd(x[at[3]], x[at[2]], x[at[1]], x[at[0]]));
+}
+
 /// pressureAt for the points of `index(k)`, k in [first, last), four at a time: the EOS, the
-/// shear term's division and the square root in AVX lanes (the same IEEE operations as
-/// pressureAt, so the same bits), the cut-off lane by lane. For an EOS without expanded states.
+/// cut-off rules of CutOff::apply and the square root in AVX lanes (the same IEEE operations
+/// as pressureAt, so the same bits). For an EOS without expanded states.
 template <class Points, class Eos, class Index>
 void pressureOfLanes(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdiff_t first,
                      std::ptrdiff_t last, const Index& index) {
     const std::ptrdiff_t blocks = (last - first) / 4;
-    const double fourThirdsShear = (4.0 / 3.0) * shearModulusOf(body);
+    const bool solid = body.strength && body.spec->shearModulus > 0.0;
+    const Lanes4 fourThirdsShear((4.0 / 3.0) * shearModulusOf(body));
+    const Lanes4 cutOff(body.minDensity);
+    const bool hasS = ps.hasStrength();
 #pragma omp parallel for schedule(static) if (last - first > static_cast<std::ptrdiff_t>(kParallelMinItems))
     for (std::ptrdiff_t blk = 0; blk < blocks; ++blk) {
         std::size_t at[4];
-        alignas(32) double rho[4], e[4], p[4], c2[4], shearTerm[4], cs[4];
         for (std::size_t j = 0; j < 4; ++j) {
             at[j] = index(first + 4 * blk + static_cast<std::ptrdiff_t>(j));
-            rho[j] = std::max(ps.rho[at[j]], body.minDensity);
-            e[j] = ps.e[at[j]];
         }
-        const Lanes4 rhoL(_mm256_load_pd(rho));
-        const EosStateOf<Lanes4> st = eos.evaluateSolid(rhoL, Lanes4(_mm256_load_pd(e)));
-        _mm256_store_pd(p, st.pressure.v);
-        _mm256_store_pd(c2, st.soundSpeedSquared.v);
-        _mm256_store_pd(shearTerm, (Lanes4(fourThirdsShear) / rhoL).v);
-        for (std::size_t j = 0; j < 4; ++j) {
-            cutOffOf(ps, at[j], body, false).apply(p[j], c2[j], shearTerm[j]);
+        const Lanes4 rhoRaw = gather4(ps.rho.data(), at);
+        const Lanes4 rho = maxOf(rhoRaw, cutOff); // std::max(rho, cut-off), as pressureAt
+        const EosStateOf<Lanes4> st = eos.evaluateSolid(rho, gather4(ps.e.data(), at));
+        // CutOff::apply without a gas pressure: no pressure below the cut-off, no tension in
+        // failed material, the shear wave where the material is intact.
+        const __m256d zero = _mm256_setzero_pd();
+        const __m256d failed =
+            hasS ? _mm256_cmp_pd(gather4(ps.damage.data(), at).v, _mm256_set1_pd(1.0), _CMP_GE_OQ)
+                 : zero;
+        const __m256d expanded = _mm256_cmp_pd(rhoRaw.v, cutOff.v, _CMP_LT_OQ);
+        const __m256d tension = _mm256_cmp_pd(st.pressure.v, zero, _CMP_LT_OQ);
+        const Lanes4 p(_mm256_blendv_pd(st.pressure.v, zero,
+                                        _mm256_or_pd(expanded, _mm256_and_pd(failed, tension))));
+        Lanes4 c2 = st.soundSpeedSquared;
+        if (solid) {
+            c2 = Lanes4(_mm256_blendv_pd((c2 + fourThirdsShear / rho).v, c2.v, failed));
         }
-        _mm256_store_pd(cs, sqrtOf(maxOf(Lanes4(_mm256_load_pd(c2)), Lanes4(0.0))).v);
+        alignas(32) double pOut[4], csOut[4];
+        _mm256_store_pd(pOut, p.v);
+        _mm256_store_pd(csOut, sqrtOf(maxOf(c2, Lanes4(0.0))).v);
         for (std::size_t j = 0; j < 4; ++j) {
             if (ps.alive[at[j]]) {
-                ps.p[at[j]] = p[j];
-                ps.cs[at[j]] = cs[j];
+                ps.p[at[j]] = pOut[j];
+                ps.cs[at[j]] = csOut[j];
             }
         }
     }
