@@ -21,8 +21,8 @@ using material::StressDeviator;
 
 namespace detail {
 
-/// The density cut-off and the solid's shear wave on one point's EOS state (p, c2 at density
-/// rho, the cut-off density or above it; `shearTerm` = 4G/(3 rho)), then its p and cs.
+/// The density cut-off and the solid's shear wave applied to one point's EOS state (p and c2
+/// at the density the EOS was evaluated at; `shearTerm` = 4G/(3 rho) there).
 /// Below the cut-off density a point is fragmented: it carries no tension. Where the EOS
 /// describes hot expanded states their pressure stays (it falls to zero with the density, so
 /// nothing jumps at the cut-off); otherwise the point carries no stress and keeps the sound

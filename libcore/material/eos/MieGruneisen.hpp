@@ -135,9 +135,10 @@ private:
         if (anyLess(L(0.0), mu)) {
             const double sm1 = hugoniotSlope - 1.0;
             const double muCap = sm1 > 0.0 ? (1.0 - kMinHugoniotDenominator) / sm1 : 0.0;
-            // capped where sm1 > 0 and 1 - sm1 mu < kMinHugoniotDenominator
+            // Capped where sm1 > 0 and 1 - sm1 mu < kMinHugoniotDenominator (never for sm1 <= 0).
+            const double noCap = -std::numeric_limits<double>::infinity();
             const L denominator = 1.0 - sm1 * mu;
-            const L limit = sm1 > 0.0 ? L(kMinHugoniotDenominator) : L(-std::numeric_limits<double>::infinity());
+            const L limit = L(sm1 > 0.0 ? kMinHugoniotDenominator : noCap);
             const L muEval = selectLess(denominator, limit, L(muCap), mu);
             const L d = 1.0 - sm1 * muEval;
             const L n = 1.0 + (1.0 - 0.5 * g0) * muEval - 0.5 * b * muEval * muEval;
