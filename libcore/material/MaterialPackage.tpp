@@ -21,37 +21,6 @@ using material::StressDeviator;
 
 namespace detail {
 
-/// The density cut-off and the solid's shear wave applied to one point's EOS state (p and c2
-/// at the density the EOS was evaluated at; `shearTerm` = 4G/(3 rho) there).
-/// Below the cut-off density a point is fragmented: it carries no tension. Where the EOS
-/// describes hot expanded states their pressure stays (it falls to zero with the density, so
-/// nothing jumps at the cut-off); otherwise the point carries no stress and keeps the sound
-/// speed of the cut-off density. A point below the cut-off carries no deviator
-/// (applyPlasticity): with a gas pressure its waves are the gas's alone.
-struct CutOff {
-    bool expanded;
-    bool keepsGasPressure;
-    bool failed;
-    bool solid; ///< the body has a shear modulus
-
-    void apply(double& p, double& c2, double shearTerm) const {
-        if (expanded) {
-            p = keepsGasPressure ? std::max(p, 0.0) : 0.0;
-        } else if (failed && p < 0.0) {
-            p = 0.0; // failed material takes no tension
-        }
-        if (solid && !failed && !(expanded && keepsGasPressure)) {
-            c2 += shearTerm;
-        }
-    }
-};
-
-template <class Points>
-CutOff cutOffOf(const Points& ps, std::size_t i, const BodyMaterial& body, bool keepsGas) {
-    return {ps.rho[i] < body.minDensity, keepsGas, ps.hasStrength() && ps.damage[i] >= 1.0,
-            body.strength && body.spec->shearModulus > 0.0};
-}
-
 inline double shearModulusOf(const BodyMaterial& body) {
     return body.strength ? body.spec->shearModulus : 0.0;
 }
@@ -59,13 +28,28 @@ inline double shearModulusOf(const BodyMaterial& body) {
 /// p and cs of point i, one at a time (any EOS).
 template <class Points, class Eos>
 void pressureAt(Points& ps, std::size_t i, const BodyMaterial& body, const Eos& eos) {
-    const bool keepsGas = eos.describesExpandedStates();
-    const double rho = keepsGas ? ps.rho[i] : std::max(ps.rho[i], body.minDensity);
+    // Below the cut-off density a point is fragmented: it carries no tension. Where the EOS
+    // describes hot expanded states their pressure stays (it falls to zero with the density,
+    // so nothing jumps at the cut-off); otherwise the point carries no stress and keeps the
+    // sound speed of the cut-off density.
+    const bool expanded = ps.rho[i] < body.minDensity;
+    const bool keepsGasPressure = eos.describesExpandedStates();
+    const double rho = keepsGasPressure ? ps.rho[i] : std::max(ps.rho[i], body.minDensity);
     const material::EosState st = eos.evaluate(rho, ps.e[i]);
     double p = st.pressure;
     double c2 = st.soundSpeedSquared;
-    const CutOff cut = cutOffOf(ps, i, body, keepsGas);
-    cut.apply(p, c2, cut.solid ? (4.0 / 3.0) * shearModulusOf(body) / rho : 0.0);
+    const bool failed = ps.hasStrength() && ps.damage[i] >= 1.0;
+    if (expanded) {
+        p = keepsGasPressure ? std::max(p, 0.0) : 0.0;
+    } else if (failed && p < 0.0) {
+        p = 0.0; // failed material takes no tension
+    }
+    // A point below the cut-off carries no deviator (applyPlasticity): with a gas pressure
+    // its waves are the gas's alone.
+    const double shear = shearModulusOf(body);
+    if (shear > 0.0 && !failed && !(expanded && keepsGasPressure)) {
+        c2 += (4.0 / 3.0) * shear / rho;
+    }
     ps.p[i] = p;
     ps.cs[i] = std::sqrt(std::max(c2, 0.0));
 }
@@ -75,21 +59,21 @@ void pressureAt(Points& ps, std::size_t i, const BodyMaterial& body, const Eos& 
 template <class Eos>
 concept LaneEos = requires(const Eos& eos, Lanes4 x) { eos.evaluateSolid(x, x); };
 
-/// The four values x[at[0..3]] as one vector (built in registers: a vector loaded from four
-/// scalar stores waits for them, which cost a sixth of this loop).
+/// The four values x[at[0..3]] as one vector, built in registers (a vector loaded from four
+/// scalar stores just made cannot be forwarded from them and waits for them to retire).
 inline Lanes4 gather4(const double* x, const std::size_t* at) {
     return Lanes4(_mm256_set_pd(x[at[3]], x[at[2]], x[at[1]], x[at[0]]));
 }
 
-/// pressureAt for the points of `index(k)`, k in [first, last), four at a time: the EOS, the
-/// cut-off rules of CutOff::apply and the square root in AVX lanes (the same IEEE operations
+/// pressureAt for the points of `index(k)`, k in [first, last), four at a time: the EOS, its
+/// cut-off rules (as lane masks) and the square root in AVX lanes (the same IEEE operations
 /// as pressureAt, so the same bits). For an EOS without expanded states.
 template <class Points, class Eos, class Index>
 void pressureOfLanes(Points& ps, const BodyMaterial& body, const Eos& eos, std::ptrdiff_t first,
                      std::ptrdiff_t last, const Index& index) {
     const std::ptrdiff_t blocks = (last - first) / 4;
-    const bool solid = body.strength && body.spec->shearModulus > 0.0;
-    const Lanes4 fourThirdsShear((4.0 / 3.0) * shearModulusOf(body));
+    const double shear = shearModulusOf(body);
+    const Lanes4 fourThirdsShear((4.0 / 3.0) * shear);
     const Lanes4 cutOff(body.minDensity);
     const bool hasS = ps.hasStrength();
 #pragma omp parallel for schedule(static) if (last - first > static_cast<std::ptrdiff_t>(kParallelMinItems))
@@ -101,8 +85,8 @@ void pressureOfLanes(Points& ps, const BodyMaterial& body, const Eos& eos, std::
         const Lanes4 rhoRaw = gather4(ps.rho.data(), at);
         const Lanes4 rho = maxOf(rhoRaw, cutOff); // std::max(rho, cut-off), as pressureAt
         const EosStateOf<Lanes4> st = eos.evaluateSolid(rho, gather4(ps.e.data(), at));
-        // CutOff::apply without a gas pressure: no pressure below the cut-off, no tension in
-        // failed material, the shear wave where the material is intact.
+        // pressureAt's rules without a gas pressure: no pressure below the cut-off, no tension
+        // in failed material, the shear wave where the material is intact.
         const __m256d zero = _mm256_setzero_pd();
         const __m256d failed =
             hasS ? _mm256_cmp_pd(gather4(ps.damage.data(), at).v, _mm256_set1_pd(1.0), _CMP_GE_OQ)
@@ -112,7 +96,7 @@ void pressureOfLanes(Points& ps, const BodyMaterial& body, const Eos& eos, std::
         const Lanes4 p(_mm256_blendv_pd(st.pressure.v, zero,
                                         _mm256_or_pd(expanded, _mm256_and_pd(failed, tension))));
         Lanes4 c2 = st.soundSpeedSquared;
-        if (solid) {
+        if (shear > 0.0) {
             c2 = Lanes4(_mm256_blendv_pd((c2 + fourThirdsShear / rho).v, c2.v, failed));
         }
         alignas(32) double pOut[4], csOut[4];
