@@ -2,12 +2,18 @@
 // three times its thickness in planar strain (FE on FE); the release waves from the flyer's back
 // and the target's free surface meet in tension a flyer thickness inside the target. Its
 // free-surface velocity rises to the impact speed, and when the spall plane opens it pulls
-// back by du. Checked: the largest principal tension of unfailed material stays at the input
-// spall strength (0.8, 1.2 and 2.0 GPa) and the centre spalls; at 1.2 GPa the acoustic
-// estimate 0.5 rho0 c_L du returns it within 10 % (the tolerance).
+// back by du. Checked at 0.8, 1.2 and 2.0 GPa: the largest principal tension of unfailed
+// material stays at the input spall strength and the centre spalls; at 1.2 and 2.0 GPa the
+// pull-back du agrees with an independent one-dimensional solution of the same problem
+// (tests/support/UniaxialStrain1D.hpp) converged on a grid ten times finer; at 1.2 GPa the
+// acoustic estimate 0.5 rho0 c_L du returns the input within 10 % (the tolerance).
+// At 2.0 GPa it does not, and must not: the converged reference reads 1.47-1.51 GPa there,
+// since the spall signal arrives while the release is still in its elastic part
+// (docs/notebook/spall-and-damage.md, *Why the pull-back reads 2.0 GPa low*).
 // Diagnostics: SPALL_H sets the element size, SPALL_NO_JC=1 removes Johnson-Cook failure.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
+#include "UniaxialStrain1D.hpp"
 #include "material/MaterialLibrary.hpp"
 
 #include <algorithm>
@@ -149,16 +155,105 @@ PullBack expectSpall(double strengthGPa) {
 
 } // namespace
 
+namespace {
+
+/// The reference's material: the same library entry, read field by field.
+test::UniaxialMaterial referenceMaterial(double strengthGPa) {
+    const json entry = aluminiumWithSpall(strengthGPa);
+    const json& eos = entry.at("eos");
+    const json& jc = entry.at("strength");
+    const json& th = entry.at("thermal");
+    constexpr double kMPaToGPa = 1e-3, kPerSToPerUs = 1e-6, kJToMJ = 1e-6;
+    return {eos.at("reference_density_g_cm3"),
+            eos.at("c0_km_s"),
+            eos.at("s"),
+            eos.at("gamma0"),
+            entry.at("elastic").at("shear_modulus_GPa"),
+            jc.at("A_MPa").get<double>() * kMPaToGPa,
+            jc.at("B_MPa").get<double>() * kMPaToGPa,
+            jc.at("n"),
+            jc.at("C"),
+            jc.at("m"),
+            jc.at("reference_strain_rate_per_s").get<double>() * kPerSToPerUs,
+            th.at("specific_heat_J_kgK").get<double>() * kJToMJ,
+            th.at("room_temperature_K"),
+            th.at("melt_temperature_K"),
+            strengthGPa};
+}
+
+struct ReferenceRun {
+    PullBack pullBack;
+    double energyStart = 0.0, energyEnd = 0.0; ///< [J/mm^2]
+};
+
+ReferenceRun runReference(double strengthGPa, double cellMm) {
+    test::UniaxialStrain1D ref(referenceMaterial(strengthGPa),
+                               {kFlyerMm, kTargetMm, kSpeedKmS, cellMm});
+    ReferenceRun out;
+    out.energyStart = ref.totalEnergy();
+    std::vector<double> history;
+    ref.run(kEndUs, [&](const test::UniaxialStrain1D& r) { history.push_back(r.freeSurfaceVelocity()); });
+    const auto peakAt = std::max_element(history.begin(), history.end());
+    out.pullBack.peak = *peakAt;
+    out.pullBack.minimum = *std::min_element(peakAt, history.end());
+    out.pullBack.maxTensionGPa = ref.maxTensionGPa();
+    out.energyEnd = ref.totalEnergy();
+    return out;
+}
+
+/// The reference on a grid ten times finer than the FE mesh (converged there: see
+/// ReferenceConverges).
+constexpr double kReferenceCellMm = kElementMm / 10.0;
+
+void expectPullBackAsReference(const PullBack& fe, double strengthGPa) {
+    const PullBack ref = runReference(strengthGPa, kReferenceCellMm).pullBack;
+    const double duFe = fe.peak - fe.minimum, duRef = ref.peak - ref.minimum;
+    std::printf("spall %.2f GPa: pull-back du %.4f km/s (FE), %.4f km/s (1D reference) -> "
+                "0.5 rho0 c_L du %.3f and %.3f GPa\n",
+                strengthGPa, duFe, duRef, acousticSpallStrength(fe), acousticSpallStrength(ref));
+    // 10 %: the FE record at 0.025 mm smears the spall signal's front over about three
+    // elements (0.012 us at c_L) while the free surface decelerates at about 5 km/s/us before
+    // it, which moves the minimum by up to 0.03 km/s; measured 3 % (2.0 GPa) and 8 % (1.2 GPa),
+    // and 3 % at 2.0 GPa on 0.0125 mm elements.
+    EXPECT_TRUE(test::near("pull-back du against the 1D reference [km/s]", duFe, duRef, 0.0, 0.10));
+}
+
+} // namespace
+
 TEST(SpallPlate, PullBackReturnsTheSpallStrengthAt1p2GPa) {
     const PullBack p = expectSpall(1.2);
     EXPECT_TRUE(test::near("spall strength from the pull-back [GPa]", acousticSpallStrength(p), 1.2,
                            0.0, 0.10));
+    expectPullBackAsReference(p, 1.2);
 }
 
-// At 0.8 and 2.0 GPa (the library's default) the criterion still holds the tension at its
-// input (checked here), but the acoustic estimate reads 41 % and 27 % low
-// (docs/notebook/spall-and-damage.md): it is not checked against the pull-back there.
+// At 2.0 GPa (the library's default) the acoustic estimate reads 27 % low, as the converged
+// reference does; the FE record is checked against the reference instead. At 0.8 GPa the spall
+// opens on the steep elastic front of the release and the reference's pull-back still moves by
+// 20 % between grids of 0.01 and 0.00125 mm: only the criterion itself is checked there.
 TEST(SpallPlate, TensionFollowsTheSpallStrength) {
     expectSpall(0.8);
-    expectSpall(2.0);
+    expectPullBackAsReference(expectSpall(2.0), 2.0);
+}
+
+// The reference itself: energy conserved, the criterion held, and the pull-back converged
+// (halving its cell moves du by under 3 % at 1.2 and 2.0 GPa; measured 0.0 % and 2.6 %).
+TEST(SpallPlate, ReferenceConverges) {
+    for (double strength : {1.2, 2.0}) {
+        const ReferenceRun fine = runReference(strength, kReferenceCellMm);
+        const ReferenceRun finer = runReference(strength, 0.5 * kReferenceCellMm);
+        const double du = fine.pullBack.peak - fine.pullBack.minimum;
+        const double du2 = finer.pullBack.peak - finer.pullBack.minimum;
+        std::printf("1D reference, spall %.2f GPa: du %.4f (%.5f mm), %.4f km/s (%.5f mm); "
+                    "energy %.6f -> %.6f J/mm^2\n",
+                    strength, du, kReferenceCellMm, du2, 0.5 * kReferenceCellMm, fine.energyStart,
+                    fine.energyEnd);
+        EXPECT_TRUE(test::near("reference du, halved cell [km/s]", du2, du, 0.0, 0.03));
+        EXPECT_TRUE(test::near("reference peak [km/s]", fine.pullBack.peak, kSpeedKmS, 0.0, 0.03));
+        EXPECT_LE(fine.pullBack.maxTensionGPa, strength * (1.0 + 1e-3));
+        EXPECT_GE(fine.pullBack.maxTensionGPa, strength * 0.99);
+        // The contact's inelastic first step and the staggered kinetic energy: about 0.2 %.
+        EXPECT_TRUE(test::near("reference energy [J/mm^2]", fine.energyEnd, fine.energyStart, 0.0,
+                               0.005));
+    }
 }
