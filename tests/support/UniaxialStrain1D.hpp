@@ -67,7 +67,6 @@ public:
         m_width.assign(m_cellMass.size(), setup.cellMm);
     }
 
-    double time() const { return m_t; }
     double freeSurfaceVelocity() const { return m_v.back(); }
     /// Largest principal stress [GPa] any unfailed target cell has carried so far.
     double maxTensionGPa() const { return m_maxTension; }
@@ -80,9 +79,6 @@ public:
             sum += m_cellMass[k] * (m_e[k] + 0.25 * (vl * vl + vr * vr));
         }
         return sum;
-    }
-    bool anySpalled() const {
-        return std::any_of(m_failed.begin() + m_flyerCells, m_failed.end(), [](bool f) { return f; });
     }
 
     /// Runs to `endUs`, calling `sample(*this)` after every step.
@@ -212,13 +208,13 @@ private:
         m_e[k] = e1;
         m_p[k] = p1;
         m_sDev[k] = sDev;
-        if (!m_failed[k] && k >= m_flyerCells) {
+        if (!m_failed[k]) {
             const double sigma1 = -p1 + std::max(sDev, -0.5 * sDev);
             if (m_mat.spallGPa > 0.0 && sigma1 > m_mat.spallGPa) {
                 m_failed[k] = true;
                 m_sDev[k] = 0.0;
                 m_p[k] = std::max(p1, 0.0);
-            } else {
+            } else if (k >= m_flyerCells) {
                 m_maxTension = std::max(m_maxTension, sigma1);
             }
         }

@@ -26,9 +26,9 @@
 // (Kanel's acoustic approximation; tests/verification/SpallPlate_test.cpp uses the longitudinal
 // sound speed). That stress exceeds the mean tension by 2/3 of the yield stress of material
 // yielding in tension. The estimate is not the input, though: once the strength exceeds the
-// release's elastic range the spall signal overtakes the slower plastic part of the release,
-// and for 6061-T6 an input of 2.0 GPa reads 1.47 GPa with c_L (the same test, against an
-// independent 1D solution). A measured pull-back value is matched by simulating its experiment.
+// release's elastic range the spall signal overtakes the slower plastic part of the release
+// and the estimate reads low, so a measured pull-back value is matched by simulating its
+// experiment (docs/materials.md, spall strength).
 //
 // Units: GPa; strain rates in 1/us.
 #pragma once
