@@ -300,9 +300,11 @@ struct Trace {
         const auto& el = fe.elements();
         const auto& nd = fe.nodes();
         std::size_t face = 0; // the rod's node on the axis nearest the anvil
+        double faceZ = -1e30;
         for (std::size_t n = 0; n < nd.size(); ++n) {
-            if (nd.body[n] == 0 && nd.r[n] < 1e-9 && nd.z[n] > nd.z[face]) {
+            if (nd.body[n] == 0 && nd.r[n] < 1e-9 && nd.z[n] > faceZ) {
                 face = n;
+                faceZ = nd.z[n];
             }
         }
         const double seq = material::StressDeviator{el.szz[i], el.srr[i], el.srz[i]}.vonMises();

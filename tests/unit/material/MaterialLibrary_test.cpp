@@ -6,6 +6,7 @@
 #include "core/Error.hpp"
 #include "material/MaterialLibrary.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -221,6 +222,36 @@ TEST(MaterialLibrary, PatchesChangeOnlyWhatTheyGive) {
             std::holds_alternative<MieGruneisen>(builtin.get(name).eos)) {
             EXPECT_TRUE(patched.contains(name)) << name;
         }
+    }
+}
+
+// Every sensitivity overlay of the workflows (make -C workflows validate VARIANT=<name>) loads
+// over the built-in library, and the fracture-rate overlay changes D4 of the alloys on the
+// source study's 6061-T6 fit and nothing else of their failure model.
+TEST(MaterialLibrary, WorkflowOverlaysLoad) {
+    const MaterialLibrary& builtin = MaterialLibrary::builtin();
+    std::size_t overlays = 0;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(hvi::test::sourcePath("workflows/materials"))) {
+        if (entry.path().extension() == ".json") {
+            EXPECT_NO_THROW(MaterialLibrary::fromFile(entry.path().string(), &builtin))
+                << entry.path();
+            ++overlays;
+        }
+    }
+    EXPECT_GE(overlays, 4u);
+    const MaterialLibrary rate = MaterialLibrary::fromFile(
+        hvi::test::sourcePath("workflows/materials/jc-rate-0.036.json").string(), &builtin);
+    EXPECT_TRUE(rate.contains("Al6061-T6"));
+    for (const std::string& name : rate.names()) {
+        const auto& after = std::get<JohnsonCookDamage>(rate.get(name).failure);
+        const auto& before = std::get<JohnsonCookDamage>(builtin.get(name).failure);
+        EXPECT_EQ(before.d4, 0.0) << name;
+        EXPECT_EQ(after.d4, 0.036) << name;
+        EXPECT_EQ(after.d1, before.d1) << name;
+        EXPECT_EQ(after.d3, before.d3) << name;
+        EXPECT_EQ(after.maxTriaxiality, before.maxTriaxiality) << name;
+        EXPECT_EQ(after.compressionClosure, before.compressionClosure) << name;
     }
 }
 
