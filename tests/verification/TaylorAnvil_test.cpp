@@ -14,13 +14,12 @@
 // Johnson-Cook strength constants (unchanged here), not the failure model under test, and
 // those constants are fitted at lower strain rates than a Taylor foot sees.
 // Diagnostics (docs/notebook/spall-and-damage.md): TAYLOR_H and TAYLOR_SPH_H set the spacing,
-// TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_CLOSURE=c sets its
-// failure.compression_closure, TAYLOR_PATCH='{"spall":{"strength_GPa":2.5}}' merge-patches its
-// library entry, TAYLOR_EROSION sets the FE erosion factor, TAYLOR_WHERE=1 lists the failed and
-// eroded points, TAYLOR_TRACE=1 the largest tension of each time window, TAYLOR_ELEMENT=i an FE
-// element's stress state and the face centre's node, TAYLOR_SPH_KERNEL
-// and TAYLOR_SPH_HFAC set the SPH kernel and h / spacing, TAYLOR_SPH_ASTRESS its artificial
-// stress epsilon, TAYLOR_DIAG=1 each point's failure (FailureLog); each run prints the largest
+// TAYLOR_DROP=spall|failure removes that block of the material, TAYLOR_PATCH merge-patches its
+// library entry (e.g. '{"failure":{"compression_closure":0}}' or '{"spall":{"strength_GPa":2.5}}'),
+// TAYLOR_EROSION sets the FE erosion factor, TAYLOR_WHERE=1 lists the failed and eroded points,
+// TAYLOR_TRACE=1 the largest tension of each time window, TAYLOR_ELEMENT=i an FE element's
+// stress state and the face centre's node, TAYLOR_SPH_KERNEL and TAYLOR_SPH_HFAC set the SPH
+// kernel and h / spacing, TAYLOR_SPH_ASTRESS its artificial stress epsilon, TAYLOR_DIAG=1 each point's failure (FailureLog); each run prints the largest
 // principal tension of the rod and where.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
@@ -151,6 +150,25 @@ void trackTension(const Set& set, double time, Tension& t) {
 
 /// TAYLOR_DIAG=1 (SPH rods): each rod particle as it fails, with its plastic strain and its
 /// mean stress triaxiality over its plastic flow (weighted by the plastic strain increments),
+
+/// The rod (body 0) is meshed with finite elements (the anvil may be, whatever the rod is).
+bool feRod(const solver::Simulation& sim) {
+    if (!sim.finiteElements()) {
+        return false;
+    }
+    const auto& body = sim.finiteElements()->elements().body;
+    return std::find(body.begin(), body.end(), 0) != body.end();
+}
+
+/// trackTension over the rod's points, elements or particles.
+void trackRodTension(const solver::Simulation& sim, Tension& t) {
+    if (feRod(sim)) {
+        trackTension(*sim.finiteElements(), sim.time(), t);
+    } else {
+        trackTension(sim.particles(), sim.time(), t);
+    }
+}
+
 /// which tells a failure in tension from one in compressive shear.
 struct FailureLog {
     std::vector<double> damage, strain, triaxialityWork, damagingStrain, damagingWork;
@@ -184,15 +202,6 @@ struct FailureLog {
         }
     }
 };
-
-/// The rod (body 0) is meshed with finite elements (the anvil may be, whatever the rod is).
-bool feRod(const solver::Simulation& sim) {
-    if (!sim.finiteElements()) {
-        return false;
-    }
-    const auto& body = sim.finiteElements()->elements().body;
-    return std::find(body.begin(), body.end(), 0) != body.end();
-}
 
 /// The rod (body 0): extent along z, largest radius, failed and eroded points.
 RodShape measure(const solver::Simulation& sim) {
@@ -242,17 +251,13 @@ void applyDiagnosticKnobs(json& doc) {
     if (const char* factor = std::getenv("TAYLOR_EROSION")) {
         doc["fe"]["erosion_factor"] = std::atof(factor);
     }
-    const char* drop = std::getenv("TAYLOR_DROP");       // drop "spall" or "failure",
-    const char* closure = std::getenv("TAYLOR_CLOSURE"); // set the closure,
-    const char* patch = std::getenv("TAYLOR_PATCH");     // or merge-patch the entry (JSON)
-    if (drop || closure || patch) {
+    const char* drop = std::getenv("TAYLOR_DROP");   // drop "spall" or "failure",
+    const char* patch = std::getenv("TAYLOR_PATCH"); // or merge-patch the entry (JSON)
+    if (drop || patch) {
         json entry =
             json::parse(material::MaterialLibrary::builtin().get("Al6061-T6").definitionJson);
         if (drop) {
             entry.erase(drop);
-        }
-        if (closure && entry.contains("failure")) {
-            entry["failure"]["compression_closure"] = std::atof(closure);
         }
         if (patch) {
             entry.merge_patch(json::parse(patch));
@@ -284,11 +289,7 @@ struct Trace {
         }
     }
     void observeWindow(const solver::Simulation& s) {
-        if (feRod(s)) {
-            trackTension(*s.finiteElements(), s.time(), window);
-        } else {
-            trackTension(s.particles(), s.time(), window);
-        }
+        trackRodTension(s, window);
         if (s.time() >= windowEnd) {
             std::printf("to %.2f us: tension %.3f GPa at t %.2f, z %.2f r %.2f\n", windowEnd,
                         window.gpa, window.timeUs, window.at.z, window.at.r);
@@ -335,11 +336,7 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
                 failures.observe(s.particles(), s.time());
             }
         }
-        if (feRod(s)) {
-            trackTension(*s.finiteElements(), s.time(), tension);
-        } else {
-            trackTension(s.particles(), s.time(), tension);
-        }
+        trackRodTension(s, tension);
         trace.observe(s);
     });
     std::printf("largest principal tension in the rod %.3f GPa at t %.2f us, z %.2f r %.2f mm\n",
