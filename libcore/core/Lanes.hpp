@@ -36,6 +36,10 @@ inline double sqrtOf(double x) {
 inline double sumOf(double x) {
     return x;
 }
+/// Stores the lanes at p, p + 1, ... (no alignment asked).
+inline void storeTo(double* p, double x) {
+    *p = x;
+}
 
 #if HVI_HAVE_LANES4
 
@@ -114,6 +118,9 @@ inline double sumOf(Lanes4 x) {
     alignas(32) double l[4];
     _mm256_store_pd(l, x.v);
     return ((l[0] + l[1]) + l[2]) + l[3];
+}
+inline void storeTo(double* p, Lanes4 x) {
+    _mm256_storeu_pd(p, x.v);
 }
 /// The largest lane.
 inline double maxLane(Lanes4 x) {

@@ -142,6 +142,7 @@ void parseControls(const json& doc, Scene& scene) {
     scene.sph.minDensityRatio = sph.at("min_density_ratio");
     scene.sph.runawaySpeedFactor = sph.at("runaway_speed_factor");
     scene.sph.artificialStress = sph.at("artificial_stress");
+    scene.sph.compatibleEnergyUpdate = sph.at("energy_update") == "compatible";
 
     const json& fe = doc.at("fe");
     scene.fe.elementSize = fe.value("element_size_mm", scene.sph.particleSpacing);

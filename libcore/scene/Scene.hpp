@@ -58,6 +58,8 @@ struct SphControls {
     double minDensityRatio = 0.5;
     double runawaySpeedFactor = 2.0;
     double artificialStress = 0.0; ///< epsilon of Monaghan's artificial stress (0: off) [-]
+    /// The half kicks pay each pair's work with their mean velocities (sph/PairWork.hpp).
+    bool compatibleEnergyUpdate = false;
 };
 
 struct FeControls {

@@ -57,6 +57,7 @@ public:
 
     std::vector<double>& vz() { return m_half[0]; }
     std::vector<double>& vr() { return m_half[1]; }
+    std::vector<double>& e() { return m_half[2]; }
     /// The half-step velocities and energy contact constrains.
     contact::ParticleHalfStep contactView() { return {&m_half[0], &m_half[1], &m_half[2]}; }
 

@@ -145,16 +145,33 @@ OutputSchedule scheduleOf(const io::CheckpointState& state, const std::filesyste
     return o;
 }
 
-/// What set the last time step: the package, and for SPH the particle (its body and place).
+/// What set the last time step: the package, and for SPH the particle, for FE the element
+/// (its body, place, density and sound speed: a hot or a crushed element shows as such).
 std::string limiterOf(const Simulation& sim) {
-    const int32_t lim = sim.dtLimitingParticle();
     std::string limiter = sim.dtLimiter();
+    const auto bodyName = [&](int32_t body) {
+        return sim.scene().bodies[static_cast<std::size_t>(body)].name.c_str();
+    };
+    char buf[200];
+    const int32_t lim = sim.dtLimitingParticle();
     if (limiter == "sph" && lim >= 0) {
         const auto& ps = sim.particles();
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "sph: %s #%d (z %.3f r %.3f mm)",
-                      sim.scene().bodies[static_cast<std::size_t>(ps.body[lim])].name.c_str(), lim,
-                      ps.z[lim], ps.r[lim]);
+        std::snprintf(buf, sizeof buf, "sph: %s #%d (z %.3f r %.3f mm)", bodyName(ps.body[lim]),
+                      lim, ps.z[lim], ps.r[lim]);
+        limiter = buf;
+    }
+    const fe::FeSolid* fe = sim.finiteElements();
+    if (limiter == "fe" && fe && fe->limitingElement() >= 0) {
+        const auto i = static_cast<std::size_t>(fe->limitingElement());
+        const auto& el = fe->elements();
+        const auto& nd = fe->nodes();
+        double z = 0.0, r = 0.0;
+        for (int a = 0; a < 4; ++a) {
+            z += 0.25 * nd.z[static_cast<std::size_t>(el.node(i, a))];
+            r += 0.25 * nd.r[static_cast<std::size_t>(el.node(i, a))];
+        }
+        std::snprintf(buf, sizeof buf, "fe: %s element #%zu (z %.3f r %.3f mm, %.2f g/cm3, c %.1f km/s)",
+                      bodyName(el.body[i]), i, z, r, el.rho[i], el.cs[i]);
         limiter = buf;
     }
     return limiter;

@@ -24,6 +24,7 @@ sph::HydroOptions hydroOptionsOf(const scene::Scene& scene,
     hydro.avBeta = scene.sph.avBeta;
     hydro.artificialStress = scene.sph.artificialStress;
     hydro.spacingOverH = 1.0 / scene.sph.smoothingLengthFactor;
+    hydro.keepPairWork = scene.sph.compatibleEnergyUpdate;
     // Solids (an equation of state with a reference state) take the pairwise density rate
     // at a density contrast; a gas keeps the corrected one (sph/SphHydro.hpp, Continuity).
     for (const auto& spec : specs) {
@@ -66,6 +67,43 @@ void SphPackage::kick(double dt) {
     const HalfStep::Lanes lanes = m_points.lanes();
     const double half = 0.5 * dt;
     lanes.kick(m_points.evolving.items(), m_points.set.alive, half);
+    if (m_hydro.options().keepPairWork) {
+        payPairWork(Kick::First, half);
+    }
+}
+
+void SphPackage::payPairWork(Kick which, double halfDt) {
+    auto& ps = m_points.set;
+    const std::vector<double>& vzHalf = m_points.half.vz();
+    const std::vector<double>& vrHalf = m_points.half.vr();
+    std::vector<double>& eHalf = m_points.half.e();
+    // Every particle that ever moved, the deleted ones too (a pair of the last evaluation may
+    // still name one); the others are at rest, their zeros set once.
+    m_meanVz.resize(ps.size(), 0.0);
+    m_meanVr.resize(ps.size(), 0.0);
+    const auto& evolving = m_points.evolving.items();
+    const std::size_t count = evolving.size();
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+    for (std::size_t a = 0; a < count; ++a) {
+        const auto i = static_cast<std::size_t>(evolving[a]);
+        m_meanVz[i] = 0.5 * (ps.vz[i] + vzHalf[i]);
+        m_meanVr[i] = 0.5 * (ps.vr[i] + vrHalf[i]);
+    }
+    const sph::PairWork& work = m_hydro.pairWork();
+    const std::size_t slots = work.slots();
+#pragma omp parallel for schedule(static) if (slots > kParallelMinHeavyItems)
+    for (std::size_t a = 0; a < slots; ++a) {
+        const auto i = static_cast<std::size_t>(work.particle(a));
+        if (!ps.alive[i]) {
+            continue;
+        }
+        const double heat = halfDt * work.heating(a, m_meanVz, m_meanVr);
+        if (which == Kick::First) {
+            eHalf[i] = ps.e[i] + heat;
+        } else {
+            ps.e[i] = eHalf[i] + heat;
+        }
+    }
 }
 
 void SphPackage::drift(double dt) {
@@ -104,6 +142,9 @@ void SphPackage::kickAgain(double dt) {
     const auto& bodies = m_materials.bodies();
     const double half = 0.5 * dt;
     lanes.predict(m_points.evolving.items(), ps.alive, half);
+    if (m_hydro.options().keepPairWork) {
+        payPairWork(Kick::Second, half);
+    }
     forEachEvolving(m_points, [&](std::size_t i) {
         // Density stays within sane bounds: an expanding fragment's density falls under the
         // stress cut-off long before it nears zero, and no particle is compressed beyond its
@@ -196,6 +237,9 @@ void SphPackage::save(io::CheckpointState& s) const {
     if (ps.hasStrength()) {
         io::putFields(s, "rate_", rt, sph::kStrengthRateFields);
     }
+    if (m_hydro.options().keepPairWork) {
+        m_hydro.pairWork().save(s, "pair_work_");
+    }
     s.extra["particle_count"] = ps.size();
     s.extra["sph_dt_us"] = m_hydro.stableTimeStep();
     s.extra["sph_dt_particle"] = m_hydro.limitingParticle();
@@ -225,6 +269,9 @@ void SphPackage::restore(const io::CheckpointState& s) {
     io::takeFields(s, "rate_", m_points.rates, sph::kRateFields);
     if (ps.hasStrength()) {
         io::takeFields(s, "rate_", m_points.rates, sph::kStrengthRateFields);
+    }
+    if (m_hydro.options().keepPairWork) {
+        m_hydro.pairWork().restore(s, "pair_work_");
     }
     m_hydro.restoreStableTimeStep(io::timeStepOf(s, "sph_dt_us"),
                                   s.extra.at("sph_dt_particle").get<int32_t>());

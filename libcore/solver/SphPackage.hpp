@@ -55,6 +55,12 @@ private:
     /// Half-step arrays := state, no particle evolving, the next evaluation repacks all.
     void resetHalfStep();
     void clampSmoothingLengths();
+    /// The compatible energy update of a half kick just made (sph/PairWork.hpp): each
+    /// particle of the last evaluation takes its heating at the mean of its velocities before
+    /// and after the kick, into the half-step energy (the first kick) or the state's (the
+    /// second).
+    enum class Kick { First, Second };
+    void payPairWork(Kick which, double halfDt);
 
     const scene::Scene& m_scene;
     ParticleState& m_points;
@@ -65,6 +71,7 @@ private:
     sph::NeighbourList m_neighbours;
     sph::NeighbourSearchOptions m_searchOptions;
     bool m_packAll = true; ///< the next evaluation repacks every particle
+    std::vector<double> m_meanVz, m_meanVr; ///< a half kick's mean velocities (payPairWork)
 };
 
 } // namespace hvi::solver

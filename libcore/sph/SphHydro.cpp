@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <limits>
 #include <omp.h>
+#include <type_traits>
 
 namespace hvi::sph {
 
@@ -51,6 +52,7 @@ struct PairSums {
     double viscExcessZ = 0.0; // -sum (w_pair - A) Pi dW/dz, of the viscosity
     double workExcessZ = 0.0; // what the energy split adds to the axial work over it
     double viscHoop = 0.0;    // sum (w_pair - A) Pi grad_r W: the viscous hoop part
+    double hoopPower = 0.0;   // the hoop force's heating per unit v_r (sph/PairWork.hpp)
     double maxMu = 0.0;
     double pairDivergence = 0.0; // sum A_j v_ij . grad W: the density rate the energy pays for
     bool contrast = false;       // a neighbour's density differs by more than kDensityContrast
@@ -154,15 +156,25 @@ struct PairAccumulators {
     V contrast = 0.0; // 1 where a neighbour's density stands out
 };
 
+/// One pair's share of particle i's heating per unit relative velocity, by component, or four
+/// pairs' (sph/PairWork.hpp): what the pair adds to de_i/dt is gz dv_z + gr dv_r.
+template <class V>
+struct PairWorkLanes {
+    V gz = 0.0, gr = 0.0;
+};
+
 /// One pair (i, j), or four, with j mirrored where its sign is -1. Each particle's own stress
 /// acts over its own circumference and the neighbour's over the neighbour's: the pair force
 /// m_i m_j (B_i / 2 pi r_i + B_j / 2 pi r_j) . grad W is antisymmetric (z-momentum is exact)
 /// and its axial part is the area-weighted, consistent one even at the axis. The viscosity is
 /// computed for every pair and kept only for approaching ones.
 /// `ownPerMass`: w_own / m_j = 1 / (2 pi r_i) (planar: 1).
-template <class Shape, bool kArtificialStress, bool kAxi, bool kMirrored, class V>
-HVI_INLINE void addPair(PairAccumulators<V>& s, const PairData& di, const Neighbour<V>& dj,
-                        double ownPerMass, const PairCoefficients& c) {
+/// `kKeepWork`: also the pair's heating coefficients into `work` (`excessOn`: 1 where the
+/// axial excess's work is taken off, addHoopTerms; else 0).
+template <class Shape, bool kArtificialStress, bool kAxi, bool kMirrored, bool kKeepWork, class V>
+HVI_INLINE void addPair(PairAccumulators<V>& s, PairWorkLanes<V>& work, const PairData& di,
+                        const Neighbour<V>& dj, double ownPerMass, double excessOn,
+                        const PairCoefficients& c) {
     const V sg = dj.sign;
     const V dz = di.z - dj.z;
     const V dr = di.r - sg * dj.r;
@@ -215,6 +227,11 @@ HVI_INLINE void addPair(PairAccumulators<V>& s, const PairData& di, const Neighb
     const V halfExcess = 0.5 * (wOwn - areaMass);
     s.de -= wPair * (dvz * ownZ + dvr * ownR) - halfExcess * (dvz * nbrZ + dvr * nbrR) -
             wPair * 0.5 * visc * (dvz * wz + dvr * wr);
+    if constexpr (kKeepWork) {
+        // The same terms by component, and below the axial excess's work where it is taken off.
+        work.gz = halfExcess * nbrZ + wPair * 0.5 * visc * wz - wPair * ownZ;
+        work.gr = halfExcess * nbrR + wPair * 0.5 * visc * wr - wPair * ownR;
+    }
     // The pairwise density rate, and whether this neighbour's density stands out.
     s.pairDivergence += areaMass * (dvz * wz + dvr * wr);
     s.contrast = maxOf(s.contrast, selectLess(kDensityContrast * di.rho, dj.rho, V(1.0), V(0.0)));
@@ -237,8 +254,11 @@ HVI_INLINE void addPair(PairAccumulators<V>& s, const PairData& di, const Neighb
         if constexpr (kMirrored) {
             s.ownExcessZ += (wOwn - areaMass) * ozz * wz;
             s.viscExcessZ -= (wPair - areaMass) * visc * wz;
-            s.workExcessZ +=
-                (halfExcess * (ozz - nzz) - 0.5 * (wPair - areaMass) * visc) * dvz * wz;
+            const V excessWork = halfExcess * (ozz - nzz) - 0.5 * (wPair - areaMass) * visc;
+            s.workExcessZ += excessWork * dvz * wz;
+            if constexpr (kKeepWork) {
+                work.gz += excessOn * (excessWork * wz);
+            }
         }
     }
 }
@@ -273,49 +293,73 @@ HVI_INLINE PairSums reduceLanes(const PairAccumulators<V>& s) {
     return sum;
 }
 
+/// Where the pair loop writes each pair's heating coefficients (sph/PairWork.hpp): slot
+/// arrays with room for the padded row, or none.
+struct WorkSlot {
+    double* gz = nullptr;
+    double* gr = nullptr;
+    double excessOn = 0.0; ///< 1 where the axial excess's work is taken off (addHoopTerms)
+};
+
+#if HVI_HAVE_LANES4
+using PairLanes = Lanes4;
+#else
+using PairLanes = double;
+#endif
+
+/// How many pair entries sumPairs computes for a row of `count` inside the support, `padded`
+/// with null pairs: all of them four at a time, only the real ones one at a time.
+HVI_INLINE std::size_t computedPairs(std::size_t count, std::size_t padded) {
+    return HVI_HAVE_LANES4 ? padded : count;
+}
+
 /// Pass 2: the pair sums of particle i over its neighbours inside the support. Where the
 /// build has AVX, four neighbours at a time over the `padded` entries (the padding's null
 /// pairs add nothing), each lane summing its own share; otherwise one at a time. Either way
 /// the order of the sums is fixed by the row, so the same build gives the same sums whatever
-/// the thread count.
-template <class Shape, bool kArtificialStress, bool kAxi, bool kMirrored>
+/// the thread count. `kKeepWork`: each pair's heating coefficients go to `slot`, one entry per
+/// pair computed (padded ones included).
+template <class Shape, bool kArtificialStress, bool kAxi, bool kMirrored, bool kKeepWork>
 HVI_INLINE PairSums sumPairs(const PairData& di, const PairData* pd, const InsideNeighbours& inside,
                              std::size_t count, std::size_t padded, double ownPerMass,
-                             const PairCoefficients& c) {
+                             const PairCoefficients& c, const WorkSlot& slot) {
+    constexpr std::size_t step = HVI_HAVE_LANES4 ? kPairLanes : 1;
+    PairAccumulators<PairLanes> s;
+    PairWorkLanes<PairLanes> work;
+    const std::size_t computed = computedPairs(count, padded);
+    for (std::size_t k = 0; k < computed; k += step) {
 #if HVI_HAVE_LANES4
-    (void)count;
-    PairAccumulators<Lanes4> s;
-    for (std::size_t k = 0; k < padded; k += kPairLanes) {
-        addPair<Shape, kArtificialStress, kAxi, kMirrored>(s, di, neighboursAt(pd, inside, k),
-                                                           ownPerMass, c);
-    }
+        const Neighbour<PairLanes> dj = neighboursAt(pd, inside, k);
 #else
-    (void)padded;
-    PairAccumulators<double> s;
-    for (std::size_t k = 0; k < count; ++k) {
-        addPair<Shape, kArtificialStress, kAxi, kMirrored>(s, di, neighbourAt(pd, inside, k),
-                                                           ownPerMass, c);
-    }
+        const Neighbour<PairLanes> dj = neighbourAt(pd, inside, k);
 #endif
+        addPair<Shape, kArtificialStress, kAxi, kMirrored, kKeepWork>(s, work, di, dj, ownPerMass,
+                                                                      slot.excessOn, c);
+        if constexpr (kKeepWork) {
+            storeTo(slot.gz + k, work.gz);
+            storeTo(slot.gr + k, work.gr);
+        }
+    }
     return reduceLanes(s);
 }
 
 /// sumPairs with the scene's geometry and the particle's mirror flag as compile-time
 /// choices (the mirrored particles are few; the rest carry none of the axial-excess sums).
-template <class Shape, bool kArtificialStress>
+template <class Shape, bool kArtificialStress, bool kKeepWork>
 HVI_INLINE PairSums sumPairsOf(bool axi, bool mirrored, const PairData& di, const PairData* pd,
                                const InsideNeighbours& inside, std::size_t count,
-                               std::size_t padded, double ownPerMass, const PairCoefficients& c) {
+                               std::size_t padded, double ownPerMass, const PairCoefficients& c,
+                               const WorkSlot& slot) {
     if (!axi) {
-        return sumPairs<Shape, kArtificialStress, false, false>(di, pd, inside, count, padded,
-                                                                ownPerMass, c);
+        return sumPairs<Shape, kArtificialStress, false, false, kKeepWork>(
+            di, pd, inside, count, padded, ownPerMass, c, slot);
     }
     if (mirrored) {
-        return sumPairs<Shape, kArtificialStress, true, true>(di, pd, inside, count, padded,
-                                                              ownPerMass, c);
+        return sumPairs<Shape, kArtificialStress, true, true, kKeepWork>(
+            di, pd, inside, count, padded, ownPerMass, c, slot);
     }
-    return sumPairs<Shape, kArtificialStress, true, false>(di, pd, inside, count, padded,
-                                                           ownPerMass, c);
+    return sumPairs<Shape, kArtificialStress, true, false, kKeepWork>(di, pd, inside, count,
+                                                                      padded, ownPerMass, c, slot);
 }
 
 /// Corrected gradient L M^-1 where M is well conditioned (enough neighbours around);
@@ -372,6 +416,7 @@ HVI_INLINE double addHoopTerms(PairSums& sum, const ParticleSet& ps, std::size_t
     // enters the force (docs/formulation.md).
     sum.ar += hoopR + hoopViscR;
     sum.de -= di.vr * (hoopR + hoopViscR);
+    sum.hoopPower = -(hoopR + hoopViscR);
     // Next to the axis the axial sums are the area-weighted ones (header comment): the own
     // and viscous excess over them is taken off, and its work with it (the work split's
     // remainder and the viscous work beyond A_j, both along z), so the particle heats as its
@@ -446,10 +491,11 @@ int64_t longestRow(const NeighbourList& list) {
 
 /// `kArtificialStress`: the artificial-stress terms are compiled in (chosen once per scene, so
 /// the default path carries no per-pair test).
-template <class Kern, bool kArtificialStress>
+/// `kKeepWork`: every pair's heating coefficients go to `work`, laid out for `list`.
+template <class Kern, bool kArtificialStress, bool kKeepWork>
 void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const HydroOptions& opt,
                    const std::vector<PairData>& data, ParticleRates& rates, double* steps,
-                   StepVote& vote, PairCounts& pairs) {
+                   StepVote& vote, PairCounts& pairs, PairWork* work) {
     using Shape = typename Kern::ShapeType;
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
@@ -488,12 +534,23 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
             // A mirror image is among the neighbours (ghosts come last in a row).
             const bool mirrored = count > 0 && inside.sign[count - 1] < 0.0;
             const double ownPerMass = axi ? inv2Pi / di.r : 1.0; // w_own = m_j / (2 pi r_i)
-            PairSums sum = sumPairsOf<Shape, kArtificialStress>(axi, mirrored, di, pd, inside,
-                                                                count, padded, ownPerMass, coeff);
+            WorkSlot slot;
+            if constexpr (kKeepWork) {
+                slot = {work->gz(a), work->gr(a),
+                        mirrored && axi && isAwake(ps, static_cast<std::size_t>(i)) ? 1.0 : 0.0};
+            }
+            PairSums sum = sumPairsOf<Shape, kArtificialStress, kKeepWork>(
+                axi, mirrored, di, pd, inside, count, padded, ownPerMass, coeff, slot);
             correctGradient(sum);
             const double hoopRate =
                 axi ? addHoopTerms(sum, ps, static_cast<std::size_t>(i), di, strength, mirrored)
                     : 0.0;
+            if constexpr (kKeepWork) {
+                const std::size_t kept = computedPairs(count, padded);
+                std::copy_n(inside.source.data(), kept, work->source(a));
+                std::copy_n(inside.sign.data(), kept, work->sign(a));
+                work->close(a, i, kept, sum.hoopPower);
+            }
             storeRates(rates, static_cast<std::size_t>(i), sum, di, hoopRate,
                        pairwiseAtContrast(static_cast<std::size_t>(i)));
             const double dtI = particleStep(sum, di, count, coeff);
@@ -580,10 +637,18 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, Partic
     double* steps = m_particleSteps.data();
     withKernel(m_options.kernel, [&](auto kernel) {
         using Kern = decltype(kernel);
-        if (m_options.artificialStress > 0.0) {
-            evaluatePairs<Kern, true>(ps, list, m_options, m_data, rates, steps, vote, m_pairs);
+        const auto run = [&](auto stress, auto keep) {
+            evaluatePairs<Kern, decltype(stress)::value, decltype(keep)::value>(
+                ps, list, m_options, m_data, rates, steps, vote, m_pairs, &m_work);
+        };
+        const bool stress = m_options.artificialStress > 0.0;
+        if (m_options.keepPairWork) {
+            m_work.layOut(list, kPairLanes);
+            stress ? run(std::true_type{}, std::true_type{})
+                   : run(std::false_type{}, std::true_type{});
         } else {
-            evaluatePairs<Kern, false>(ps, list, m_options, m_data, rates, steps, vote, m_pairs);
+            stress ? run(std::true_type{}, std::false_type{})
+                   : run(std::false_type{}, std::false_type{});
         }
     });
     m_stableDt = vote.dt;

@@ -25,6 +25,9 @@
 //   area weights (docs/formulation.md, Energy):
 //     de_i/dt = -sum_j v_ij . (A_j B_i + (w_own,ij - A_j)(B_i - B_j)/2
 //                              - w_pair,ij Pi_ij/2 I) . grad W_ij  -  v_r,i hoop_i
+//   Every term of it is linear in the velocities; with HydroOptions::keepPairWork each pair's
+//   coefficients are kept for the half kicks to pay them with their own mean velocities
+//   (sph/PairWork.hpp, the compatible energy update).
 //   Next to the axis (docs/formulation.md, The axis): a particle with a mirror among its
 //   neighbours takes off the axial excess of its own-stress and viscous sums over the
 //   area-weighted ones,
@@ -69,6 +72,7 @@
 
 #include "sph/Kernel.hpp"
 #include "sph/NeighbourSearch.hpp"
+#include "sph/PairWork.hpp"
 #include "sph/ParticleSet.hpp"
 
 #include <cstdint>
@@ -91,6 +95,9 @@ struct HydroOptions {
     /// neighbour's density differs from theirs by more than 1.5 (header comment,
     /// Continuity); empty or 0: always the corrected one.
     std::vector<uint8_t> pairwiseContinuityAtContrast;
+    /// Keep each pair's work per unit relative velocity (sph/PairWork.hpp), for the
+    /// compatible energy update of the half kicks; false: the energy takes the rate alone.
+    bool keepPairWork = false;
 };
 
 /// What a particle contributes to its neighbours' sums, packed so a neighbour is two cache
@@ -142,6 +149,10 @@ public:
     const std::vector<double>& particleSteps() const { return m_particleSteps; }
     /// The pairs of the last evaluate().
     const PairCounts& pairCounts() const { return m_pairs; }
+    /// The pair work of the last evaluate() (HydroOptions::keepPairWork; empty otherwise),
+    /// and its way back from a checkpoint.
+    const PairWork& pairWork() const { return m_work; }
+    PairWork& pairWork() { return m_work; }
 
     const HydroOptions& options() const { return m_options; }
 
@@ -152,6 +163,7 @@ private:
     std::vector<PairData> m_data; ///< per particle, refreshed by every evaluate()
     std::vector<double> m_particleSteps;
     PairCounts m_pairs;
+    PairWork m_work;
 };
 
 } // namespace hvi::sph

@@ -33,10 +33,11 @@ json cyclicAluminium() {
     return {{"AlCyclic", entry}};
 }
 
-json resumeScene() {
+/// `energyUpdate`: the particles' energy update (sph.energy_update).
+json resumeScene(const std::string& energyUpdate) {
     return {{"geometry", "axisymmetric"},
             {"materials", cyclicAluminium()},
-            {"sph", {{"particle_spacing_mm", 0.05}}},
+            {"sph", {{"particle_spacing_mm", 0.05}, {"energy_update", energyUpdate}}},
             {"fe", {{"element_size_mm", 0.05}}},
             {"run",
              {{"end_time_us", 10.0},
@@ -60,10 +61,8 @@ json resumeScene() {
                  {"outer_radius_mm", 4.0}}}}}}};
 }
 
-} // namespace
-
-TEST(FeResume, CheckpointedRunEndsBitForBit) {
-    const json doc = resumeScene();
+void expectResumeEndsBitForBit(const std::string& energyUpdate) {
+    const json doc = resumeScene(energyUpdate);
     const auto sc = test::makeScene(doc);
     const auto library = scene::sceneLibrary(doc["materials"], "<test>");
     solver::Simulation straight(sc, library);
@@ -104,4 +103,16 @@ TEST(FeResume, CheckpointedRunEndsBitForBit) {
     const auto& onset = se.tensionOnset;
     ASSERT_TRUE(std::any_of(onset.begin(), onset.end(), [](double v) { return v > 0.0; }))
         << "the test must cover a tensile excursion after compression";
+}
+
+} // namespace
+
+TEST(FeResume, CheckpointedRunEndsBitForBit) {
+    expectResumeEndsBitForBit("trapezoid");
+}
+
+// The compatible update's first kick after the resume pays the pair work of the evaluation
+// before the checkpoint (sph/PairWork.hpp), which the checkpoint must carry.
+TEST(FeResume, CheckpointedRunEndsBitForBitWithTheCompatibleEnergyUpdate) {
+    expectResumeEndsBitForBit("compatible");
 }

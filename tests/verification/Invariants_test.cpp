@@ -25,9 +25,10 @@ namespace {
 
 /// A small Al sphere on a thick Al plate at 2 km/s, axisymmetric, with strength: nothing is
 /// deleted in 0.3 us, and most of the plate is still dormant.
-json impactScene(double spacing, const std::string& geometry = "axisymmetric") {
+json impactScene(double spacing, const std::string& geometry = "axisymmetric",
+                 const std::string& energyUpdate = "trapezoid") {
     return {{"geometry", geometry},
-            {"sph", {{"particle_spacing_mm", spacing}}},
+            {"sph", {{"particle_spacing_mm", spacing}, {"energy_update", energyUpdate}}},
             {"run", {{"end_time_us", 0.3}, {"stop_debris_speed_km_s", 0.0},
                      {"stop_no_new_penetration_us", 0.0}}},
             {"domain", {{"radius_mm", 11.0}}},
@@ -50,9 +51,10 @@ struct Outcome {
 };
 
 Outcome run(double spacing, bool skipDormant, int threads,
-            const std::string& geometry = "axisymmetric") {
+            const std::string& geometry = "axisymmetric",
+            const std::string& energyUpdate = "trapezoid") {
     omp_set_num_threads(threads);
-    const auto scene = test::makeScene(impactScene(spacing, geometry));
+    const auto scene = test::makeScene(impactScene(spacing, geometry, energyUpdate));
     solver::SimulationOptions options;
     options.skipDormant = skipDormant;
     solver::Simulation sim(scene, scene::sceneLibrary(json::object(), "<test>"), options);
@@ -119,6 +121,34 @@ TEST(Invariants, ConservationWithoutDeletion) {
     // drifted 4.5e-3 here); issue #4's 1e-6 held only with the hand-on, which the flyer-plate
     // axis test fails.
     EXPECT_LT(o.momentumDrift, 1e-3);
+}
+
+TEST(Invariants, CompatibleEnergyUpdateIsExactPlanar) {
+    // The half kicks pay each pair's work with their mean velocities (sph/PairWork.hpp):
+    // every force is a pair force in planar mode, so kinetic plus internal energy is conserved
+    // to round-off at any step, where the trapezoid update leaves the step's truncation error.
+    const Outcome trapezoid = run(0.04, true, 1, "planar");
+    const Outcome compatible = run(0.04, true, 1, "planar", "compatible");
+    std::printf("planar: max |energy error| %.3e trapezoid, %.3e compatible\n",
+                trapezoid.maxEnergyError, compatible.maxEnergyError);
+    ASSERT_EQ(compatible.deleted, 0u);
+    EXPECT_LT(compatible.maxEnergyError, 1e-11);
+    EXPECT_GT(trapezoid.maxEnergyError, 1e3 * compatible.maxEnergyError);
+}
+
+TEST(Invariants, CompatibleEnergyUpdateAxisymmetric) {
+    // Axisymmetric, the axial excess taken off next to the axis is not a pair force and its
+    // work is not the one booked (sph/SphHydro.hpp): that, not the time integration, is this
+    // scene's energy error (measured: 5.57e-4 trapezoid, 5.60e-4 compatible). The update keeps
+    // the bar, and 1 and 2 threads still agree bitwise.
+    const Outcome one = run(0.04, true, 1, "axisymmetric", "compatible");
+    const Outcome two = run(0.04, true, 2, "axisymmetric", "compatible");
+    std::printf("axisymmetric, compatible: max |energy error| %.3e\n", one.maxEnergyError);
+    EXPECT_LT(one.maxEnergyError, 0.01);
+    EXPECT_GT(two.maxActive, hvi::kParallelMinItems);
+    EXPECT_EQ(one.z, two.z);
+    EXPECT_EQ(one.vz, two.vz);
+    EXPECT_EQ(one.e, two.e);
 }
 
 TEST(Invariants, PlanarMomentumIsExact) {
