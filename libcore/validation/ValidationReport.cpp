@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -32,6 +33,15 @@ struct Row {
     std::optional<std::string> ble;
     std::optional<double> bleRatio; ///< d / d_c
     std::string solver;             ///< the build of hvi-run that made the run (its git id)
+    /// What the run's profile (run facts' `profile`, solver/Profile.hpp) says of its cost;
+    /// empty for a run of a build before the profile.
+    struct Cost {
+        double wallS = 0.0, steps = 0.0, loopS = 0.0;
+        int threads = 1;
+        std::map<std::string, double> packageS;                  ///< sph, fe, contact
+        std::map<std::string, std::pair<double, double>> bins; ///< binned, evaluated
+    };
+    std::optional<Cost> cost;
 };
 
 std::optional<json> readIfPresent(const fs::path& path) {
@@ -56,6 +66,43 @@ std::string fmt(const char* format, double value) {
     char buf[64];
     std::snprintf(buf, sizeof buf, format, value);
     return buf;
+}
+
+/// The run's cost from its profile (JSON text in the run facts), if it has one.
+void readCost(Row& row, const json& run) {
+    if (!member(run, "profile").is_string()) {
+        return;
+    }
+    const json p = json::parse(member(run, "profile").get<std::string>(), nullptr, false);
+    if (!member(p, "wall_time_s").is_number()) {
+        return; // not a profile this report can read
+    }
+    Row::Cost cost;
+    cost.wallS = member(p, "wall_time_s").get<double>();
+    cost.steps = member(p, "steps").is_number() ? member(p, "steps").get<double>() : 0.0;
+    cost.threads = member(run, "threads").is_number() ? member(run, "threads").get<int>() : 1;
+    if (member(p, "packages").is_object()) {
+        for (const auto& [name, pkg] : member(p, "packages").items()) {
+            if (member(pkg, "total_s").is_number()) {
+                cost.packageS[name] = member(pkg, "total_s").get<double>();
+            }
+        }
+    }
+    if (member(p, "loop_s").is_object()) {
+        for (const auto& [name, seconds] : member(p, "loop_s").items()) {
+            cost.loopS += seconds.is_number() ? seconds.get<double>() : 0.0;
+        }
+    }
+    if (member(p, "time_bins").is_object()) {
+        for (const auto& [name, b] : member(p, "time_bins").items()) {
+            if (member(b, "binned_point_steps").is_number() &&
+                member(b, "evaluated_point_steps").is_number()) {
+                cost.bins[name] = {member(b, "binned_point_steps").get<double>(),
+                                   member(b, "evaluated_point_steps").get<double>()};
+            }
+        }
+    }
+    row.cost = cost;
 }
 
 /// The hydrocode's part of a row from an hvi-assess verdict file, if there is one.
@@ -93,6 +140,7 @@ void readVerdict(Row& row, const fs::path& file) {
                 row.wallS = member(run, "this_wall_time_s").get<double>();
             }
         }
+        readCost(row, run);
         row.complete = member(*v, "complete") == true;
         if (member(*v, "solver").is_object() && member(member(*v, "solver"), "git").is_string()) {
             row.solver = member(member(*v, "solver"), "git").get<std::string>();
@@ -292,6 +340,84 @@ std::string sensitivitySection(const std::vector<Row>& rows, const ReportOptions
     return md.str();
 }
 
+/// Where the runs' time went, by set and shield: the sums of their profiles.
+std::string costSection(const std::vector<Row>& rows) {
+    struct Group {
+        std::vector<double> walls, steps;
+        double wallS = 0.0, loopS = 0.0;
+        std::map<std::string, double> packageS;
+        std::map<std::string, std::pair<double, double>> bins;
+        std::set<int> threads;
+        void add(const Row::Cost& c) {
+            walls.push_back(c.wallS);
+            steps.push_back(c.steps);
+            wallS += c.wallS;
+            loopS += c.loopS;
+            threads.insert(c.threads);
+            for (const auto& [name, seconds] : c.packageS) {
+                packageS[name] += seconds;
+            }
+            for (const auto& [name, b] : c.bins) {
+                bins[name].first += b.first;
+                bins[name].second += b.second;
+            }
+        }
+    };
+    std::map<std::string, Group> groups;
+    Group all;
+    for (const auto& r : rows) {
+        if (r.ours && r.cost) {
+            groups[r.c->set + " " + toString(r.c->shield)].add(*r.cost);
+            all.add(*r.cost);
+        }
+    }
+    if (all.walls.empty()) {
+        return {};
+    }
+    const auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        const std::size_t n = v.size();
+        return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    };
+    const auto share = [](double part, double whole) {
+        return whole > 0.0 ? fmt("%.0f %%", 100.0 * part / whole) : std::string("–");
+    };
+    const auto binned = [](const Group& g, const char* name) {
+        const auto it = g.bins.find(name);
+        return it != g.bins.end() && it->second.second > 0.0
+                   ? fmt("%.0f %%", 100.0 * it->second.first / it->second.second)
+                   : std::string("–");
+    };
+    const auto line = [&](const std::string& name, const Group& g) {
+        std::string threads;
+        for (const int t : g.threads) {
+            threads += (threads.empty() ? "" : ", ") + std::to_string(t);
+        }
+        const auto pkg = [&](const char* p) {
+            const auto it = g.packageS.find(p);
+            return share(it == g.packageS.end() ? 0.0 : it->second, g.wallS);
+        };
+        return "| " + name + " | " + std::to_string(g.walls.size()) + " | " + threads + " | " +
+               fmt("%.1f", g.wallS / 3600.0) + " | " + fmt("%.0f", median(g.walls)) + " | " +
+               fmt("%.0f", *std::max_element(g.walls.begin(), g.walls.end())) + " | " +
+               fmt("%.0f", median(g.steps)) + " | " + pkg("sph") + " | " + pkg("fe") + " | " +
+               pkg("contact") + " | " + share(g.loopS, g.wallS) + " | " + binned(g, "sph") +
+               " | " + binned(g, "fe") + " |\n";
+    };
+    std::string md = "## Run cost\n\nFrom each run's profile (`/run@profile`, "
+                     "docs/performance.md), for the runs that have one: their wall time by set "
+                     "and shield, its share in each package and in the loop's own work "
+                     "(deletion, stop rules, output), and what time-step bins would leave of the "
+                     "packages' point evaluations (the profile's bound).\n\n"
+                     "| set, shield | runs | threads | wall h | median s | max s | median steps | "
+                     "sph | fe | contact | loop | bins: sph | bins: fe |\n"
+                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& [name, g] : groups) {
+        md += line(name, g);
+    }
+    return md + line("all", all) + "\n";
+}
+
 } // namespace
 
 std::string validationReport(const std::vector<Case>& cases, const fs::path& outDir,
@@ -406,7 +532,7 @@ std::string validationReport(const std::vector<Case>& cases, const fs::path& out
            << " |\n";
     }
     md << "\n"
-       << stabilitySection(rows, options) << sensitivitySection(rows, options)
+       << costSection(rows) << stabilitySection(rows, options) << sensitivitySection(rows, options)
        << "## Assumptions\n\n";
     for (const auto& c : cases) {
         for (const auto& a : c.assumptions) {

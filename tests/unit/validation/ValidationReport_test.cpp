@@ -187,3 +187,38 @@ TEST(ValidationReport, TabulatesTheVerdictsOfEachMaterialVariant) {
                   .find("Sensitivity to material"),
               std::string::npos);
 }
+
+// The run-cost table sums the runs' profiles by set and shield: the wall time, the packages'
+// shares of it, the loop's own work and the time-bin bound (binned over evaluated point-steps,
+// summed before the division); a run without a profile is left out of it.
+TEST(ValidationReport, SumsTheRunsProfilesByShield) {
+    const auto cases = validation::selectCases("quick");
+    const fs::path out = test::tempPath("validation_report_cost");
+    fs::remove_all(out);
+    writeCase(out / "HITF03147-2", "NP", false, 0.8);
+    writeCase(out / "HITF03147-3", "P", false, 1.3);
+    writeCase(out / "A1076", "P", false, 1.8); // no profile
+    auto withProfile = [&](const char* id, double wall, double sph, double fe, double binned,
+                           double evaluated) {
+        nlohmann::json v = nlohmann::json::parse(std::ifstream(out / id / "verdict.json"));
+        const nlohmann::json profile = {
+            {"wall_time_s", wall},
+            {"steps", 1000},
+            {"packages", {{"sph", {{"total_s", sph}}}, {"fe", {{"total_s", fe}}}}},
+            {"loop_s", {{"output", 0.1 * wall}}},
+            {"time_bins",
+             {{"sph", {{"binned_point_steps", binned}, {"evaluated_point_steps", evaluated}}}}}};
+        v["run"] = {{"threads", 1}, {"profile", profile.dump()}};
+        std::ofstream(out / id / "verdict.json") << v.dump();
+    };
+    withProfile("HITF03147-2", 100.0, 60.0, 20.0, 30.0, 100.0);
+    withProfile("HITF03147-3", 300.0, 120.0, 120.0, 70.0, 300.0);
+    const std::string md = validation::validationReport(cases, out, {"quick", "0.04", {}, {}});
+    // 400 s: sph 180 (45 %), fe 140 (35 %), loop 40 (10 %); bins (30 + 70) / (100 + 300), where
+    // the mean of the runs' fractions would be 27 %.
+    EXPECT_NE(md.find("| source_study foam | 2 | 1 | 0.1 | 200 | 300 | 1000 | 45 % | 35 % | 0 % | "
+                      "10 % | 25 % | – |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| all | 2 | 1 |"), std::string::npos) << md;
+}
