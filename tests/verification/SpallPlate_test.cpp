@@ -10,6 +10,9 @@
 // At 2.0 GPa it does not, nor should it: the converged reference reads 1.47-1.51 GPa there,
 // since the spall signal arrives while the release is still in its elastic part
 // (docs/notebook/spall-and-damage.md, *Why the pull-back reads 2.0 GPa low*).
+// The published 6061 series at 196, 288 and 490 m/s (end of the file) is run as well: the peak
+// stresses against its gauges, the tension an unfailed plate reaches, and the input that
+// reproduces its pull-back readings.
 // Diagnostics: SPALL_H sets the element size, SPALL_NO_JC=1 removes Johnson-Cook failure.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
@@ -48,7 +51,7 @@ json aluminiumWithSpall(double strengthGPa) {
     return entry;
 }
 
-json spallScene(double strengthGPa) {
+json spallScene(double strengthGPa, double speedKmS) {
     auto body = [&](const char* name, double z0, double z1, double v) {
         json b = {{"name", name},
                   {"material", "AlSpall"},
@@ -74,7 +77,7 @@ json spallScene(double strengthGPa) {
               {"stop_no_new_penetration_us", 0.0}}},
             {"domain", {{"radius_mm", 50.0}}},
             {"bodies",
-             {body("flyer", -kFlyerMm, 0.0, kSpeedKmS), body("target", 0.0, kTargetMm, 0.0)}}};
+             {body("flyer", -kFlyerMm, 0.0, speedKmS), body("target", 0.0, kTargetMm, 0.0)}}};
 }
 
 struct PullBack {
@@ -82,6 +85,7 @@ struct PullBack {
     double minimum = 0.0;       ///< its minimum after the peak [km/s]
     std::size_t spalled = 0;    ///< target elements failed in the sampled centre band
     double maxTensionGPa = 0.0; ///< largest principal stress of an unfailed target element
+    double peakStressGPa = 0.0; ///< largest longitudinal compression of a target element
 };
 
 /// The free-surface record's peak and its minimum after the peak.
@@ -93,8 +97,8 @@ PullBack pullBackOf(const std::vector<double>& freeSurfaceVelocity) {
     return out;
 }
 
-PullBack runSpall(double strengthGPa) {
-    const auto doc = spallScene(strengthGPa);
+PullBack runSpall(double strengthGPa, double speedKmS = kSpeedKmS) {
+    const auto doc = spallScene(strengthGPa, speedKmS);
     const auto scene = test::makeScene(doc);
     solver::Simulation sim(scene, scene::sceneLibrary(doc["materials"], "<test>"));
     const fe::FeSolid& fe = *sim.finiteElements();
@@ -120,6 +124,7 @@ PullBack runSpall(double strengthGPa) {
             if (el.body[i] == 1 && el.alive[i] && el.damage[i] < 1.0) {
                 const material::StressDeviator dev{el.szz[i], el.srr[i], el.srz[i]};
                 out.maxTensionGPa = std::max(out.maxTensionGPa, dev.maxPrincipal() - el.p[i]);
+                out.peakStressGPa = std::max(out.peakStressGPa, el.p[i] - el.szz[i]);
             }
         }
     });
@@ -193,9 +198,9 @@ struct ReferenceRun {
     double energyStart = 0.0, energyEnd = 0.0; ///< [J/mm^2]
 };
 
-ReferenceRun runReference(double strengthGPa, double cellMm) {
+ReferenceRun runReference(double strengthGPa, double cellMm, double speedKmS = kSpeedKmS) {
     test::UniaxialStrain1D ref(referenceMaterial(strengthGPa),
-                               {kFlyerMm, kTargetMm, kSpeedKmS, cellMm});
+                               {kFlyerMm, kTargetMm, speedKmS, cellMm});
     ReferenceRun out;
     out.energyStart = ref.totalEnergy();
     std::vector<double> history;
@@ -262,5 +267,84 @@ TEST(SpallPlate, ReferenceConverges) {
         // The contact's inelastic first step and the staggered kinetic energy: measured 0.03 %.
         EXPECT_TRUE(test::near("reference energy [J/mm^2]", fine.energyEnd, fine.energyStart, 0.0,
                                0.005));
+    }
+}
+
+// A published 6061 series against the model: plate impacts at 196, 288 and 490 m/s with
+// manganin gauges in the target and VISAR on its free surface ("Determination of Hugoniot and
+// strength properties of 6061 aluminium alloy under dynamic loading", read in its abstract:
+// peak stresses 1.4, 2.2 and 3.8 GPa, spall strengths 0.81, 0.96 and 1.08 GPa from the
+// free-surface records at 1.8e4-3.7e4 /s; the temper and the plates' thicknesses are not
+// given there). The plates here keep this file's 0.5 mm flyer on 1.5 mm: the largest tension an
+// unfailed plate reaches does not depend on them (1D reference at 196 m/s: 1.277-1.288 GPa for
+// flyers of 0.5 to 3 mm on targets three or two times thicker).
+namespace {
+
+struct SeriesShot {
+    double speedKmS, peakStressGPa, spallGPa;
+};
+constexpr SeriesShot kSeries[] = {{0.196, 1.4, 0.81}, {0.288, 2.2, 0.96}, {0.490, 3.8, 1.08}};
+
+/// The experiment's reading of a free-surface record, 0.5 rho0 c0 du with the bulk sound speed
+/// (the usual acoustic estimate; with c_L it reads 22 % higher).
+double bulkSpallReading(const PullBack& p) {
+    const test::UniaxialMaterial m = referenceMaterial(0.0);
+    return 0.5 * m.rho0 * m.c0 * (p.peak - p.minimum);
+}
+
+} // namespace
+
+// The plates without a spall criterion. The largest tension of the independent 1D reference
+// at 196 m/s, 1.29 GPa, bounds the spall strength from above: the experiment spalled that plate,
+// so no input above it reproduces the series, and at 288 m/s it stays below the library's
+// 2.0 GPa as well. The FE plate's largest element values run above the reference's (measured
+// +14 % to +17 % in tension, and the peak compression 9-18 % above the gauges' 1.4, 2.2 and
+// 3.8 GPa, where the free-surface peak's Hugoniot stress with the deviator of the yield stress,
+// rho0 (c0 + s u) u + 2A/3 at u = half the peak, reads 1.54, 2.23 and 3.81 GPa): the ringing
+// of the elastic precursor at the wave fronts, which this mesh leaves undamped (the reference
+// has a linear viscosity); 25 % bounds it.
+TEST(SpallPlate, PublishedSeriesBoundsTheStrength) {
+    for (const SeriesShot& shot : kSeries) {
+        const PullBack fe = runSpall(0.0, shot.speedKmS);
+        const PullBack ref = runReference(0.0, kReferenceCellMm, shot.speedKmS).pullBack;
+        const test::UniaxialMaterial m = referenceMaterial(0.0);
+        const double u = 0.5 * fe.peak;
+        const double hugoniotGPa = m.rho0 * (m.c0 + m.s * u) * u + 2.0 / 3.0 * m.aGPa;
+        std::printf("%.0f m/s, no spall criterion: peak compression %.3f GPa, Hugoniot stress of "
+                    "the free-surface peak %.3f GPa (gauges %.1f); largest tension %.3f GPa (FE), "
+                    "%.3f GPa (1D reference)\n",
+                    1e3 * shot.speedKmS, fe.peakStressGPa, hugoniotGPa, shot.peakStressGPa,
+                    fe.maxTensionGPa, ref.maxTensionGPa);
+        EXPECT_TRUE(test::near("Hugoniot stress of the free-surface peak against the gauges [GPa]",
+                               hugoniotGPa, shot.peakStressGPa, 0.0, 0.12));
+        EXPECT_TRUE(test::near("largest tension, FE against the 1D reference [GPa]",
+                               fe.maxTensionGPa, ref.maxTensionGPa, 0.0, 0.25));
+        if (shot.speedKmS < 0.2) {
+            EXPECT_LT(ref.maxTensionGPa, 1.30);
+        } else if (shot.speedKmS < 0.3) {
+            EXPECT_LT(ref.maxTensionGPa, 2.0);
+        }
+    }
+}
+
+// Which spall strength reproduces the series' readings: on the 1D reference (which the FE
+// plate follows within 10 %, PullBackReturnsTheSpallStrengthAt1p2GPa), the reading rises
+// steeply with the input once the input passes the release's elastic range, so each measured
+// value fixes the input closely. Measured: 0.81 GPa at 196 m/s between the inputs 1.10 (reads
+// 0.70) and 1.15 GPa (0.95); 0.96 at 288 m/s between 1.10 (0.73) and 1.15 (0.97); 1.08 at
+// 490 m/s between 1.20 (1.01) and 1.25 (1.14). Checked: every reading lies between those of
+// the inputs 1.05 and 1.30 GPa.
+TEST(SpallPlate, PublishedSeriesFixesTheStrengthNear1p2GPa) {
+    constexpr double kLowGPa = 1.05, kHighGPa = 1.30;
+    for (const SeriesShot& shot : kSeries) {
+        const double low =
+            bulkSpallReading(runReference(kLowGPa, kReferenceCellMm, shot.speedKmS).pullBack);
+        const double high =
+            bulkSpallReading(runReference(kHighGPa, kReferenceCellMm, shot.speedKmS).pullBack);
+        std::printf("%.0f m/s: reading %.3f GPa at an input of %.2f GPa, %.3f at %.2f; measured "
+                    "%.2f\n",
+                    1e3 * shot.speedKmS, low, kLowGPa, high, kHighGPa, shot.spallGPa);
+        EXPECT_LT(low, shot.spallGPa);
+        EXPECT_GT(high, shot.spallGPa);
     }
 }
