@@ -13,7 +13,9 @@
 // The published 6061 series at 196, 288 and 490 m/s (end of the file) is run as well: the peak
 // stresses against its gauges, the tension an unfailed plate reaches, and the input that
 // reproduces its pull-back readings.
-// Diagnostics: SPALL_H sets the element size, SPALL_NO_JC=1 removes Johnson-Cook failure.
+// Diagnostics: SPALL_H sets the element size, SPALL_NO_JC=1 removes Johnson-Cook failure,
+// SPALL_PATCH merge-patches the spall block (e.g. '{"rate_exponent":0.12}'), and the disabled
+// PublishedSeriesFeReadings prints the FE plate's readings of the series at SPALL_GPA.
 #include "SceneRun.hpp"
 #include "Tolerance.hpp"
 #include "UniaxialStrain1D.hpp"
@@ -47,6 +49,9 @@ json aluminiumWithSpall(double strengthGPa) {
         entry["spall"]["strength_GPa"] = strengthGPa;
     } else {
         entry.erase("spall");
+    }
+    if (const char* patch = std::getenv("SPALL_PATCH"); patch && entry.contains("spall")) {
+        entry["spall"].merge_patch(json::parse(patch));
     }
     return entry;
 }
@@ -346,5 +351,16 @@ TEST(SpallPlate, PublishedSeriesFixesTheStrengthNear1p2GPa) {
                     1e3 * shot.speedKmS, low, kLowGPa, high, kHighGPa, shot.spallGPa);
         EXPECT_LT(low, shot.spallGPa);
         EXPECT_GT(high, shot.spallGPa);
+    }
+}
+
+TEST(SpallPlate, DISABLED_PublishedSeriesFeReadings) {
+    const double strength = test::envOr("SPALL_GPA", 1.2);
+    for (const SeriesShot& shot : kSeries) {
+        const PullBack fe = runSpall(strength, shot.speedKmS);
+        std::printf("%.0f m/s, input %.3f GPa: FE reading %.3f GPa (measured %.2f), largest "
+                    "tension of unfailed material %.3f GPa, %zu failed in the centre band\n",
+                    1e3 * shot.speedKmS, strength, bulkSpallReading(fe), shot.spallGPa,
+                    fe.maxTensionGPa, fe.spalled);
     }
 }
