@@ -28,15 +28,20 @@ const char* kScene = R"({"id": "cli-small", "geometry": "axisymmetric",
     {"name": "plate", "role": "bumper", "material": "Al6061-T6",
      "shape": {"type": "plate", "z_front_mm": 0.0, "thickness_mm": 0.5, "outer_radius_mm": 3.0}}
   ]})";
-/// The kScene run to 8 us with a snapshot every 1 us: long enough (a second or more) to be
-/// interrupted after its first checkpoint.
+/// Wall time between the periodic checkpoints of the interrupted runs below.
+constexpr double kCheckpointEverySeconds = 0.1;
+
+/// The kScene run to 40 us with a snapshot every 4 us: over a second of wall time on one
+/// thread, ten or more times kCheckpointEverySeconds, so a run is still going when its first
+/// checkpoint appears (at 8 us it took 0.4 s, and on a quiet machine ended before the
+/// checkpoint of a 0.3 s interval).
 std::string longScene() {
     std::string text = kScene;
     auto set = [&text](const std::string& from, const std::string& to) {
         text.replace(text.find(from), from.size(), to);
     };
-    set("\"end_time_us\": 0.3", "\"end_time_us\": 8.0");
-    set("\"snapshot_every_us\": 0.1", "\"snapshot_every_us\": 1.0");
+    set("\"end_time_us\": 0.3", "\"end_time_us\": 40.0");
+    set("\"snapshot_every_us\": 0.1", "\"snapshot_every_us\": 4.0");
     return text;
 }
 
@@ -55,15 +60,17 @@ std::filesystem::path uninterruptedRun() {
 }
 
 /// A shell command: hvi-run on `scene` into `run` in the background, checkpointing every
-/// 0.3 s; once its first checkpoint exists (at most 60 s), `kill -SIGNAL` it and wait.
+/// kCheckpointEverySeconds; once its first checkpoint exists (at most 60 s, and no longer than
+/// the run lasts), `kill -SIGNAL` it and wait.
 std::string signalAfterFirstCheckpoint(const std::filesystem::path& scene,
                                        const std::filesystem::path& run,
                                        const std::string& signal) {
     const auto checkpoint = hvi::io::checkpointPathFor(run);
     return toolPath("hvi-run").string() + " " + scene.string() + " -o " + run.string() +
-           " --threads 1 -q --checkpoint-every-s 0.3 & p=$!; i=0; while [ ! -f " +
-           checkpoint.string() + " ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i+1)); done; " +
-           "kill -" + signal + " $p; wait $p";
+           " --threads 1 -q --checkpoint-every-s " + std::to_string(kCheckpointEverySeconds) +
+           " & p=$!; i=0; while [ ! -f " + checkpoint.string() +
+           " ] && [ $i -lt 6000 ] && kill -0 $p 2>/dev/null; do sleep 0.01; i=$((i+1)); done; " +
+           "kill -" + signal + " $p 2>/dev/null; wait $p";
 }
 
 /// h5diff's verdict on the snapshots and the history of two run files ("" when identical;
@@ -211,13 +218,13 @@ TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
     while (const auto stale = hvi::io::orphanedTemporary(run)) {
         std::filesystem::remove(*stale);
     }
-    // Start it, wait for its first checkpoint (0.3 s of wall time in), then kill -9.
+    // Start it, wait for its first checkpoint, then kill -9.
     const std::string script = signalAfterFirstCheckpoint(scene, run, "9") + "; exit 0";
     ASSERT_EQ(std::system(script.c_str()), 0);
-    ASSERT_TRUE(std::filesystem::exists(checkpoint)) << "no checkpoint within 60 s";
     if (std::filesystem::exists(run)) {
         GTEST_SKIP() << "the run finished before it could be killed (machine too fast)";
     }
+    ASSERT_TRUE(std::filesystem::exists(checkpoint)) << "no checkpoint within 60 s";
     ASSERT_TRUE(hvi::io::orphanedTemporary(run).has_value());
 
     // A checkpoint of another scene with the same point count (the projectile faster) is
@@ -251,7 +258,7 @@ TEST(HviRunCli, ARunKilledOutrightResumesWithItsEarlierSnapshots) {
     EXPECT_NE(r.err.find("killed outright"), std::string::npos) << r.err;
     EXPECT_FALSE(hvi::io::orphanedTemporary(run).has_value());
     hvi::io::RunFileReader reader(run.string());
-    ASSERT_EQ(reader.snapshots().size(), 9u); // t = 0, 1, ..., 8: none lost, none twice
+    ASSERT_EQ(reader.snapshots().size(), 11u); // t = 0, 4, ..., 40: none lost, none twice
     EXPECT_EQ(reader.snapshots().front().timeUs, 0.0);
     const auto history = reader.readHistory();
     ASSERT_FALSE(history.timeUs.empty());
@@ -270,8 +277,8 @@ TEST(HviRunCli, AStoppedAndResumedRunIsTheUninterruptedOne) {
         const auto checkpoint = tempPath("stopped.ckpt.h5");
         std::filesystem::remove(run);
         std::filesystem::remove(checkpoint);
-        // Stop it once its first periodic checkpoint exists (0.3 s of wall time in), so the
-        // stop falls between scheduled snapshots, after some history.
+        // Stop it once its first periodic checkpoint exists, so the stop falls between
+        // scheduled snapshots, after some history.
         const std::string script = signalAfterFirstCheckpoint(scene, run, signal) + "; exit $?";
         const int status = std::system(script.c_str());
         ASSERT_TRUE(WIFEXITED(status));
@@ -288,12 +295,12 @@ TEST(HviRunCli, AStoppedAndResumedRunIsTheUninterruptedOne) {
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(resultsDiffer(uninterruptedRun(), run), "");
         EXPECT_FALSE(std::filesystem::exists(checkpoint));
-        // Its wall time is the whole run's: the part before the stop (at least the 0.3 s to
-        // the first checkpoint) and this one; a resumed run used to report its last part only.
+        // Its wall time is the whole run's: the part before the stop (at least the interval
+        // to the first checkpoint) and this one; a resumed run used to report its last part only.
         const auto facts = hvi::io::RunFileReader(run.string()).runFacts();
         EXPECT_EQ(facts["resumed"], true);
         ASSERT_TRUE(facts["earlier_wall_time_s"].is_number()) << facts.dump();
-        EXPECT_GE(facts["earlier_wall_time_s"].get<double>(), 0.3);
+        EXPECT_GE(facts["earlier_wall_time_s"].get<double>(), kCheckpointEverySeconds);
         EXPECT_DOUBLE_EQ(facts["wall_time_s"].get<double>(),
                          facts["earlier_wall_time_s"].get<double>() +
                              facts["this_wall_time_s"].get<double>());
