@@ -134,10 +134,14 @@ struct Tension {
     double gpa = 0.0, timeUs = 0.0;
     Position at;
     double meanGPa = 0.0;
+    double expansionPerS = 0.0; ///< volumetric expansion rate -d ln(rho)/dt there [1/s]
+    std::vector<double> lastRho; ///< each point's density at the previous call
+    double lastTime = 0.0;
 };
 template <class Set>
 void trackTension(const Set& set, double time, Tension& t) {
     const auto& pts = pointsOf(set);
+    const bool rates = t.lastRho.size() == pts.size() && time > t.lastTime;
     for (std::size_t i = 0; i < pts.size(); ++i) {
         if (pts.body[i] != 0 || !pts.alive[i] || pts.damage[i] >= 1.0) {
             continue;
@@ -145,10 +149,16 @@ void trackTension(const Set& set, double time, Tension& t) {
         const material::StressDeviator dev{pts.szz[i], pts.srr[i], pts.srz[i]};
         const double sigma1 = dev.maxPrincipal() - pts.p[i];
         if (sigma1 > t.gpa) {
-            t = {sigma1, time, positionOf(set, i), t.meanGPa};
+            t.gpa = sigma1;
+            t.timeUs = time;
+            t.at = positionOf(set, i);
+            t.expansionPerS =
+                rates ? -1e6 * std::log(pts.rho[i] / t.lastRho[i]) / (time - t.lastTime) : 0.0;
         }
         t.meanGPa = std::max(t.meanGPa, -pts.p[i]);
     }
+    t.lastRho = pts.rho;
+    t.lastTime = time;
 }
 
 /// TAYLOR_DIAG=1 (SPH rods): each rod particle as it fails, with its plastic strain and its
@@ -349,9 +359,10 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
         trackRodTension(s, tension);
         trace.observe(s);
     });
-    std::printf("largest principal tension in the rod %.3f GPa at t %.2f us, z %.2f r %.2f mm; "
-                "largest mean tension %.3f GPa\n",
-                tension.gpa, tension.timeUs, tension.at.z, tension.at.r, tension.meanGPa);
+    std::printf("largest principal tension in the rod %.3f GPa at t %.2f us, z %.2f r %.2f mm "
+                "(expanding at %.2e /s); largest mean tension %.3f GPa\n",
+                tension.gpa, tension.timeUs, tension.at.z, tension.at.r, tension.expansionPerS,
+                tension.meanGPa);
     const RodShape rod = measure(sim);
     std::printf("Taylor %s %.0f m/s, spacing %.3f mm: L_f %.2f mm (test %.1f), D_f %.2f mm "
                 "(test %.1f); %zu of %zu points failed, %zu eroded; energy error %.2e\n",
