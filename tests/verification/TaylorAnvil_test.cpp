@@ -401,8 +401,9 @@ TEST(TaylorAnvil, FeRodAt227MetresPerSecondStaysWholeAtTheSeriesSpallStrength) {
 }
 
 // Known failures, the open part of issue #24; run them with --gtest_also_run_disabled_tests.
-// At 1.2 GPa the 339 m/s rod fails 27 of its 1083 points in its core 1.5-2.4 mm behind the face,
-// which carries 1.37 GPa of principal tension and 1.24 GPa of mean tension (the series' plates
+// At 1.2 GPa the 339 m/s rod fails 27 of its 1083 points, 24 of them in a core within 1.2 mm of
+// the axis and 0.5-1.9 mm behind the face (six columns, not the axis column alone), which
+// without failure carries 1.37 GPa of principal and 1.24 GPa of mean tension (the series' plates
 // spall at 0.97-1.00 GPa of mean tension at that input): no rate-independent strength keeps
 // this rod whole and spalls the 196 m/s plate (largest tension 1.29 GPa). SPH rods fail at
 // 227 m/s at the library's 2.0 GPa already, behind the face and by spall in the core.
