@@ -379,7 +379,7 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
 // Spacing 0.2 mm (38 elements across), on the 4340 steel anvil. At 0.1 mm the 227 m/s rod ends
 // 10.04 mm long with a 9.86 mm foot and nothing fails (even at 1.2 GPa of spall strength); the
 // 339 m/s rod ends 8.94 mm long with a 12.07 mm foot, nothing failed and 2 of 4332 elements
-// eroded. On the rigid anvil (TAYLOR_ANVIL=mirror: two rods at +-V) the 227 m/s rod's core
+// eroded (by the erosion strain, at the foot's rim). On the rigid anvil (TAYLOR_ANVIL=mirror: two rods at +-V) the 227 m/s rod's core
 // carries 1.60 GPa of principal tension (0.96 on steel) and the 339 m/s rod's 2.44 GPa (1.37
 // on steel), where 21 points fail: a rigid face reflects the full impact stress, steel about
 // 0.73 of it (elastic impedances rho c_L 46 and 17 GPa s/km), and the lateral release that
