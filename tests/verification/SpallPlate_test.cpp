@@ -73,25 +73,25 @@ json spallScene(double strengthGPa, double speedKmS) {
         }
         return b;
     };
-    return {{"geometry", "planar"},
-            {"materials", {{"AlSpall", aluminiumWithSpall(strengthGPa)}}},
-            {"fe", {{"element_size_mm", test::envOr("SPALL_H", kElementMm)}}},
-            {"run",
-             {{"end_time_us", kEndUs},
-              {"stop_debris_speed_km_s", 0.0},
-              {"stop_no_new_penetration_us", 0.0}}},
-            {"domain", {{"radius_mm", 50.0}}},
-            {"bodies",
-             {body("flyer", -kFlyerMm, 0.0, speedKmS), body("target", 0.0, kTargetMm, 0.0)}}};
+    return {
+        {"geometry", "planar"},
+        {"materials", {{"AlSpall", aluminiumWithSpall(strengthGPa)}}},
+        {"fe", {{"element_size_mm", test::envOr("SPALL_H", kElementMm)}}},
+        {"run",
+         {{"end_time_us", kEndUs},
+          {"stop_debris_speed_km_s", 0.0},
+          {"stop_no_new_penetration_us", 0.0}}},
+        {"domain", {{"radius_mm", 50.0}}},
+        {"bodies", {body("flyer", -kFlyerMm, 0.0, speedKmS), body("target", 0.0, kTargetMm, 0.0)}}};
 }
 
 struct PullBack {
-    double peak = 0.0;          ///< free-surface velocity plateau [km/s]
-    double minimum = 0.0;       ///< its minimum after the peak [km/s]
-    std::size_t spalled = 0;    ///< target elements failed in the sampled centre band
-    double maxTensionGPa = 0.0; ///< largest principal stress of an unfailed target element
+    double peak = 0.0;              ///< free-surface velocity plateau [km/s]
+    double minimum = 0.0;           ///< its minimum after the peak [km/s]
+    std::size_t spalled = 0;        ///< target elements failed in the sampled centre band
+    double maxTensionGPa = 0.0;     ///< largest principal stress of an unfailed target element
     double maxMeanTensionGPa = 0.0; ///< largest mean tension -P of an unfailed target element
-    double peakStressGPa = 0.0; ///< largest longitudinal compression of a target element
+    double peakStressGPa = 0.0;     ///< largest longitudinal compression of a target element
 };
 
 /// The free-surface record's peak and its minimum after the peak.
@@ -211,7 +211,8 @@ ReferenceRun runReference(double strengthGPa, double cellMm, double speedKmS = k
     ReferenceRun out;
     out.energyStart = ref.totalEnergy();
     std::vector<double> history;
-    ref.run(kEndUs, [&](const test::UniaxialStrain1D& r) { history.push_back(r.freeSurfaceVelocity()); });
+    ref.run(kEndUs,
+            [&](const test::UniaxialStrain1D& r) { history.push_back(r.freeSurfaceVelocity()); });
     out.pullBack = pullBackOf(history);
     out.pullBack.maxTensionGPa = ref.maxTensionGPa();
     out.energyEnd = ref.totalEnergy();
@@ -272,8 +273,8 @@ TEST(SpallPlate, ReferenceConverges) {
         EXPECT_LE(fine.pullBack.maxTensionGPa, strength * (1.0 + 1e-3));
         EXPECT_GE(fine.pullBack.maxTensionGPa, strength * 0.99);
         // The contact's inelastic first step and the staggered kinetic energy: measured 0.03 %.
-        EXPECT_TRUE(test::near("reference energy [J/mm^2]", fine.energyEnd, fine.energyStart, 0.0,
-                               0.005));
+        EXPECT_TRUE(
+            test::near("reference energy [J/mm^2]", fine.energyEnd, fine.energyStart, 0.0, 0.005));
     }
 }
 

@@ -4,10 +4,10 @@
 // on a rigid, frictionless anvil (the contact plane is a symmetry plane): a stiffer anvil than
 // the test's, which loads the rod's core harder (see the FE tests below), and for SPH rods no
 // anvil at all, since two SPH bodies pressed together are one continuum that held the
-// rebounding rods together in tension (76 particles failed at 227 m/s, against 21 on steel). Data: House, Lewis, Gillis, Wilson, IJIE 16 (1995)
-// 189, rods 7.595 mm across and 11.39 mm long (L/D = 1.5), final length and foot diameter
-// as transcribed in the public HighRateExptData collection (TaylorData/MATLAB/
-// plot6061T6Al.m; not checked against the paper):
+// rebounding rods together in tension (76 particles failed at 227 m/s, against 21 on steel).
+// Data: House, Lewis, Gillis, Wilson, IJIE 16 (1995) 189, rods 7.595 mm across and 11.39 mm
+// long (L/D = 1.5), final length and foot diameter as transcribed in the public
+// HighRateExptData collection (TaylorData/MATLAB/plot6061T6Al.m; not checked against the paper):
 //   227 m/s: L_f 10.2 mm, D_f 9.9 mm;   339 m/s: L_f 8.3 mm, D_f 12.8 mm.
 // What must hold: no point of a rod fails (damage 1) and none is eroded, in FE and in SPH,
 // at both speeds. The final shape is checked loosely (10 % on L_f and D_f): it measures the
@@ -134,7 +134,7 @@ struct Tension {
     double gpa = 0.0, timeUs = 0.0;
     Position at;
     double meanGPa = 0.0;
-    double expansionPerS = 0.0; ///< volumetric expansion rate -d ln(rho)/dt there [1/s]
+    double expansionPerS = 0.0;  ///< volumetric expansion rate -d ln(rho)/dt there [1/s]
     std::vector<double> lastRho; ///< each point's density at the previous call
     double lastTime = 0.0;
 };
@@ -379,11 +379,11 @@ void expectWholeRod(double speedKmS, const char* discretization, double spacing,
 // Spacing 0.2 mm (38 elements across), on the 4340 steel anvil. At 0.1 mm the 227 m/s rod ends
 // 10.04 mm long with a 9.86 mm foot and nothing fails (even at 1.2 GPa of spall strength); the
 // 339 m/s rod ends 8.94 mm long with a 12.07 mm foot, nothing failed and 2 of 4332 elements
-// eroded (by the erosion strain, at the foot's rim). On the rigid anvil (TAYLOR_ANVIL=mirror: two rods at +-V) the 227 m/s rod's core
-// carries 1.60 GPa of principal tension (0.96 on steel) and the 339 m/s rod's 2.44 GPa (1.37
-// on steel), where 21 points fail: a rigid face reflects the full impact stress, steel about
-// 0.73 of it (elastic impedances rho c_L 46 and 17 GPa s/km), and the lateral release that
-// converges on the axis carries that difference into the core.
+// eroded (by the erosion strain, at the foot's rim). On the rigid anvil (TAYLOR_ANVIL=mirror:
+// two rods at +-V) the 227 m/s rod's core carries 1.60 GPa of principal tension (0.96 on steel)
+// and the 339 m/s rod's 2.44 GPa (1.37 on steel), where 21 points fail: a rigid face reflects the
+// full impact stress, steel about 0.73 of it (elastic impedances rho c_L 46 and 17 GPa s/km), and
+// the lateral release that converges on the axis carries that difference into the core.
 TEST(TaylorAnvil, FeRodAt227MetresPerSecondStaysWhole) {
     expectWholeRod(0.227, "fe", test::envOr("TAYLOR_H", 0.2), 10.2, 9.9, Anvil::Steel);
 }
