@@ -354,10 +354,8 @@ TEST(HviRunCli, TheLastHistoryRowIsWrittenOnce) {
 // Two hvi-run on one -o both exited 0 and the last rename won (issue #25, item 13): the second
 // is refused while the first runs, and the first's lock goes with it.
 TEST(HviRunCli, ASecondRunOnTheSameOutputIsRefused) {
-    std::string text = kScene;
-    text.replace(text.find("\"end_time_us\": 0.3"), std::string("\"end_time_us\": 0.3").size(),
-                 "\"end_time_us\": 8.0");
-    const auto scene = writeTemp("locked.json", text);
+    // The long scene, so the first run still holds the lock when the second starts.
+    const auto scene = writeTemp("locked.json", longScene());
     const auto run = tempPath("locked.h5");
     const auto lock = tempPath("locked.lock");
     std::filesystem::remove(run);
