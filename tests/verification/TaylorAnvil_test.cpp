@@ -337,7 +337,9 @@ struct Trace {
 void expectWholeRod(double speedKmS, const char* discretization, double spacing, double lengthMm,
                     double footMm, Anvil anvil, const json& rodPatch = nullptr) {
     if (const char* choice = std::getenv("TAYLOR_ANVIL")) {
-        anvil = std::string(choice) == "steel" ? Anvil::Steel : Anvil::Mirror;
+        const std::string name = choice;
+        ASSERT_TRUE(name == "steel" || name == "mirror") << "TAYLOR_ANVIL=steel|mirror: " << name;
+        anvil = name == "steel" ? Anvil::Steel : Anvil::Mirror;
     }
     json doc = taylorScene(speedKmS, discretization, spacing, anvil);
     applyDiagnosticKnobs(doc, rodPatch);
