@@ -340,7 +340,11 @@ void HviRunTool::execute() {
     std::string rates;
     char buf[96];
     if (sphParticles > 0) {
-        std::snprintf(buf, sizeof buf, "%.3e particle-steps/s", summary.particleSteps / wall);
+        // Over the particles the steps evaluated too (the dormant ones and, with time-step
+        // bins, those in the course of an interval are not).
+        std::snprintf(buf, sizeof buf, "%.3e particle-steps/s (%.0f %% evaluated)",
+                      summary.particleSteps / wall,
+                      100.0 * summary.activeParticleSteps / std::max(summary.particleSteps, 1.0));
         rates = buf;
     }
     if (elements > 0) {

@@ -68,10 +68,18 @@ public:
     template <class Points, class Rates>
     void applyPlasticity(Points& points, const Rates& rates, std::span<const int32_t> active,
                          double dt) const;
+    /// The same over a step of each point's own, steps[i] [us] (time-step bins).
+    template <class Points, class Rates>
+    void applyPlasticity(Points& points, const Rates& rates, std::span<const int32_t> active,
+                         const std::vector<double>& steps) const;
 
     const std::vector<BodyMaterial>& bodies() const { return m_bodies; }
 
 private:
+    template <class Points, class Rates, class StepOf>
+    void plasticity(Points& points, const Rates& rates, std::span<const int32_t> active,
+                    StepOf&& stepOf) const;
+
     std::vector<BodyMaterial> m_bodies;
 };
 

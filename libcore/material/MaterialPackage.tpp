@@ -203,6 +203,19 @@ void MaterialPackage::addStressRates(const Points& ps, std::span<const int32_t> 
 template <class Points, class Rates>
 void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
                                       std::span<const int32_t> active, double dt) const {
+    plasticity(ps, rates, active, [dt](std::size_t) { return dt; });
+}
+
+template <class Points, class Rates>
+void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
+                                      std::span<const int32_t> active,
+                                      const std::vector<double>& steps) const {
+    plasticity(ps, rates, active, [&steps](std::size_t i) { return steps[i]; });
+}
+
+template <class Points, class Rates, class StepOf>
+void MaterialPackage::plasticity(Points& ps, const Rates& rates, std::span<const int32_t> active,
+                                 StepOf&& stepOf) const {
     if (!ps.hasStrength()) {
         return;
     }
@@ -252,7 +265,8 @@ void MaterialPackage::applyPlasticity(Points& ps, const Rates& rates,
             }
             ps.plasticStrain[i] += dEps;
             if (spec.spall) {
-                ps.damage[i] = spec.spall->damageAfter(ps.damage[i], s, ps.p[i], rate, dt);
+                ps.damage[i] = spec.spall->damageAfter(ps.damage[i], s, ps.p[i], rate,
+                                                    stepOf(static_cast<std::size_t>(i)));
             }
             if (ps.damage[i] >= 1.0) {
                 s = StressDeviator{};

@@ -143,6 +143,7 @@ void parseControls(const json& doc, Scene& scene) {
     scene.sph.runawaySpeedFactor = sph.at("runaway_speed_factor");
     scene.sph.artificialStress = sph.at("artificial_stress");
     scene.sph.compatibleEnergyUpdate = sph.at("energy_update") == "compatible";
+    scene.sph.timeBins = sph.at("time_stepping") == "bins";
 
     const json& fe = doc.at("fe");
     scene.fe.elementSize = fe.value("element_size_mm", scene.sph.particleSpacing);
@@ -280,6 +281,12 @@ Scene parseScene(const json& document, const std::string& file,
         materials.insert(name);
     }
     std::vector<InputIssue> issues;
+    if (scene.sph.timeBins && scene.sph.compatibleEnergyUpdate) {
+        // The compatible update pays each pair's work at one step for both particles.
+        issues.push_back({file, "/sph/time_stepping",
+                          "time-step bins do not combine with energy_update 'compatible'",
+                          "\"time_stepping\": \"global\", or \"energy_update\": \"trapezoid\""});
+    }
     std::set<std::string> names;
     const json& bodies = doc.at("bodies");
     for (std::size_t k = 0; k < bodies.size(); ++k) {

@@ -60,6 +60,9 @@ struct SphControls {
     double artificialStress = 0.0; ///< epsilon of Monaghan's artificial stress (0: off) [-]
     /// The half kicks pay each pair's work with their mean velocities (sph/PairWork.hpp).
     bool compatibleEnergyUpdate = false;
+    /// Each particle steps at its own power-of-two multiple of the scene's step
+    /// (solver/TimeBins.hpp).
+    bool timeBins = false;
 };
 
 struct FeControls {

@@ -9,12 +9,15 @@
 #pragma once
 
 #include "contact/ContactPoints.hpp"
+#include "core/Parallel.hpp"
+#include "io/Checkpoint.hpp"
 #include "sph/ParticleSet.hpp"
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace hvi::solver {
@@ -49,10 +52,56 @@ public:
                   double halfDt) const;
         void predict(std::span<const int32_t> items, const std::vector<uint8_t>& alive,
                      double halfDt) const;
+        /// The same with a coefficient of each point's own, coef(i) [us], in place of dt/2
+        /// (time-step bins, solver/TimeBins.hpp); `shift`: half := half + coef(i) rate.
+        template <class Coef>
+        void kickEach(std::span<const int32_t> items, const std::vector<uint8_t>& alive,
+                      Coef&& coef) const {
+            stepEach(half.data(), state.data(), items, alive, coef);
+        }
+        template <class Coef>
+        void predictEach(std::span<const int32_t> items, const std::vector<uint8_t>& alive,
+                         Coef&& coef) const {
+            stepEach(state.data(), half.data(), items, alive, coef);
+        }
+        template <class Coef>
+        void shiftEach(std::span<const int32_t> items, const std::vector<uint8_t>& alive,
+                       Coef&& coef) const {
+            stepEach(half.data(), half.data(), items, alive, coef);
+        }
+
+    private:
+        /// to[i] := from[i] + coef(i) rate[i] for the alive points of `items`, field by field,
+        /// in one parallel region (the fields' loops need no barrier between them).
+        template <class Coef>
+        void stepEach(double* const* to, const double* const* from,
+                      std::span<const int32_t> items, const std::vector<uint8_t>& alive,
+                      Coef& coef) const {
+            const std::size_t n = items.size();
+            const int32_t* idx = items.data();
+            const uint8_t* live = alive.data();
+#pragma omp parallel if (n > kParallelMinItems)
+            for (std::size_t f = 0; f < count; ++f) {
+                double* out = to[f];
+                const double* in = from[f];
+                const double* d = rate[f];
+#pragma omp for schedule(static) nowait
+                for (std::size_t a = 0; a < n; ++a) {
+                    const auto i = static_cast<std::size_t>(idx[a]);
+                    if (live[i]) {
+                        out[i] = in[i] + coef(i) * d[i];
+                    }
+                }
+            }
+        }
     };
 
     /// Every half-step array := the particles' state (the start of a run, or a resume).
     void reset(const sph::ParticleSet& ps);
+    /// The half-step arrays into a checkpoint under `prefix`, and back (time-step bins: a
+    /// particle in the course of its interval keeps its half step across a resume).
+    void save(io::CheckpointState& state, const std::string& prefix) const;
+    void restore(const io::CheckpointState& state, const std::string& prefix);
     Lanes lanes(sph::ParticleSet& ps, const sph::ParticleRates& rates);
 
     std::vector<double>& vz() { return m_half[0]; }

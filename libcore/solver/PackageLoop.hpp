@@ -15,6 +15,10 @@
 
 namespace hvi::solver {
 
+/// The time step grows by at most this factor from one step to the next: a sudden jump after
+/// a quiet phase would skip the first steps of a new contact.
+inline constexpr double kMaxDtGrowth = 1.25;
+
 class PackageLoop {
 public:
     /// Appends a package (not owned); phases run in the order of the calls.

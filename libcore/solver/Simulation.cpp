@@ -9,7 +9,6 @@
 namespace hvi::solver {
 
 namespace {
-constexpr double kMaxDtGrowth = 1.25;
 constexpr int kProgressEvery = 10; ///< steps between penetration checks
 /// Simulated time between two confirmations of a rear-wall perforation [us]: the assessment
 /// costs a copy of the state and a pass over it, so it is asked at most this often.

@@ -63,8 +63,12 @@ public:
     sph::ParticleSet& particles() { return m_points.set; }
     const scene::Scene& scene() const { return m_scene; }
     const std::vector<sph::BodyFill>& bodyFills() const { return m_fills; }
-    std::size_t activeCount() const { return m_sph->neighbours().active.size(); }
+    /// The particles whose rates the last step evaluated (with time-step bins, those whose
+    /// interval it closed).
+    std::size_t activeCount() const { return m_sph->evaluatedCount(); }
     std::size_t aliveCount() const { return m_points.aliveCount; }
+    /// The particles the steps integrate (every one that has moved since the start).
+    std::size_t evolvingCount() const { return m_points.evolving.size(); }
     /// The particle whose stability limit set the SPH vote (-1 if none).
     int32_t dtLimitingParticle() const { return m_sph->limitingParticle(); }
     /// The SPH package's time-step vote before the Courant factor [us].

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <variant>
 
@@ -57,7 +58,8 @@ SphPackage::SphPackage(const scene::Scene& scene, ParticleState& points,
                        const std::vector<material::MaterialSpec>& specs,
                        std::vector<material::BodyMaterial> bodies, bool skipDormant)
     : m_scene(scene), m_points(points), m_fills(fills), m_specs(specs),
-      m_materials(std::move(bodies)), m_hydro(hydroOptionsOf(scene, specs)) {
+      m_materials(std::move(bodies)), m_hydro(hydroOptionsOf(scene, specs)),
+      m_binned(scene.sph.timeBins) {
     m_searchOptions.axisymmetric = scene.geometry == scene::Geometry::Axisymmetric;
     m_searchOptions.kernelSupport = sph::kKernelSupport;
     m_searchOptions.skipDormant = skipDormant;
@@ -65,6 +67,12 @@ SphPackage::SphPackage(const scene::Scene& scene, ParticleState& points,
 
 void SphPackage::kick(double dt) {
     const HalfStep::Lanes lanes = m_points.lanes();
+    if (m_binned) {
+        m_bins.beginStep(m_points.evolving.items(), m_points.set.alive, m_scene.run.cfl, dt);
+        lanes.kickEach(m_bins.opening(), m_points.set.alive,
+                       [this](std::size_t i) { return m_bins.openingHalf(i); });
+        return;
+    }
     const double half = 0.5 * dt;
     lanes.kick(m_points.evolving.items(), m_points.set.alive, half);
     if (m_hydro.options().keepPairWork) {
@@ -127,13 +135,23 @@ void SphPackage::drift(double dt) {
     });
     // The end-of-step prediction with the rates of the start (after the reflection, which
     // turns the half-step v_r it starts from).
+    if (m_binned) {
+        // An interval that ends otherwise than planned first takes its half step to its
+        // actual midpoint (solver/TimeBins.hpp).
+        lanes.shiftEach(m_bins.closing(), ps.alive, [this](std::size_t i) {
+            return m_bins.offPlan(i) ? m_bins.closingCorrection(i) : 0.0;
+        });
+        lanes.predictEach(m_points.evolving.items(), ps.alive,
+                          [this](std::size_t i) { return m_bins.predictionOffset(i); });
+        return;
+    }
     lanes.predict(m_points.evolving.items(), ps.alive, half);
 }
 
-void SphPackage::evaluate(double /*dt*/) {
+void SphPackage::evaluate(double dt) {
     clampSmoothingLengths();
     m_materials.updatePressure(m_points.set, m_points.evolving.items());
-    computeRates();
+    computeRates(dt);
 }
 
 void SphPackage::kickAgain(double dt) {
@@ -141,7 +159,12 @@ void SphPackage::kickAgain(double dt) {
     const HalfStep::Lanes lanes = m_points.lanes();
     const auto& bodies = m_materials.bodies();
     const double half = 0.5 * dt;
-    lanes.predict(m_points.evolving.items(), ps.alive, half);
+    if (m_binned) {
+        lanes.predictEach(m_evaluated, ps.alive,
+                          [this](std::size_t i) { return m_bins.closingHalf(i); });
+    } else {
+        lanes.predict(m_points.evolving.items(), ps.alive, half);
+    }
     if (m_hydro.options().keepPairWork) {
         payPairWork(Kick::Second, half);
     }
@@ -156,39 +179,116 @@ void SphPackage::kickAgain(double dt) {
 
 void SphPackage::finish(double dt) {
     clampSmoothingLengths();
-    m_materials.applyPlasticity(m_points.set, m_points.rates, m_neighbours.active, dt);
+    if (m_binned) {
+        m_materials.applyPlasticity(m_points.set, m_points.rates, m_evaluatedActive,
+                                    m_bins.intervals());
+    } else {
+        m_materials.applyPlasticity(m_points.set, m_points.rates, m_neighbours.active, dt);
+    }
     m_materials.updatePressure(m_points.set, m_points.evolving.items());
+    if (m_binned) {
+        m_bins.endStep(m_points.evolving.items(), m_points.set.alive, dt);
+    }
 }
 
-void SphPackage::prepare(double /*dtGuess*/) {
+void SphPackage::prepare(double dtGuess) {
     auto& ps = m_points.set;
     m_points.rates.resize(ps.size(), ps.hasStrength());
     m_points.rates.zero();
     m_materials.updatePressure(ps);
     resetHalfStep();
-    computeRates();
+    computeRates(dtGuess);
 }
 
-void SphPackage::computeRates() {
+void SphPackage::computeRates(double dt) {
     auto& ps = m_points.set;
     const Stopwatch search;
     sph::updateNeighbourList(ps, m_searchOptions, m_neighbours);
     bookSection("neighbour search", search.seconds());
     const Stopwatch pairs;
-    // Only particles that have evolved can hold non-zero rates: the evaluation writes the
-    // rates of the active particles, and every active particle joins the evolving set.
-    m_points.rates.zero(m_points.evolving.items());
-    m_hydro.evaluate(ps, m_neighbours, m_points.rates,
-                     m_packAll ? nullptr : &m_points.evolving.items());
+    if (m_binned) {
+        computeBinnedRates(dt);
+    } else {
+        // Only particles that have evolved can hold non-zero rates: the evaluation writes the
+        // rates of the active particles, and every active particle joins the evolving set.
+        m_points.rates.zero(m_points.evolving.items());
+        m_hydro.evaluate(ps, m_neighbours, m_points.rates,
+                         m_packAll ? nullptr : &m_points.evolving.items());
+        m_materials.addStressRates(ps, m_neighbours.active, m_points.rates);
+    }
     m_packAll = false;
-    m_materials.addStressRates(ps, m_neighbours.active, m_points.rates);
     bookSection("pair loops", pairs.seconds());
     m_points.evolving.include(m_neighbours.active);
+}
+
+void SphPackage::computeBinnedRates(double dt) {
+    auto& ps = m_points.set;
+    const auto& active = m_neighbours.active;
+    // The active particles whose interval ends (or that evolve from this step on), and every
+    // particle whose interval ends: those take new rates, the others keep theirs.
+    m_dueSlots.clear();
+    m_evaluatedActive.clear();
+    m_evaluated = m_bins.closing();
+    for (std::size_t a = 0; a < active.size(); ++a) {
+        const auto i = static_cast<std::size_t>(active[a]);
+        if (!m_bins.evaluated(i)) {
+            continue;
+        }
+        m_dueSlots.push_back(static_cast<int32_t>(a));
+        m_evaluatedActive.push_back(active[a]);
+        if (!m_points.evolving.contains(i)) {
+            m_bins.admit(i, dt);
+            m_evaluated.push_back(active[a]);
+        }
+    }
+    m_points.rates.zero(m_evaluated);
+    m_hydro.evaluate(ps, m_neighbours, m_points.rates,
+                     m_packAll ? nullptr : &m_points.evolving.items(), &m_dueSlots);
+    m_materials.addStressRates(ps, m_evaluatedActive, m_points.rates);
+    // Each evaluated particle's vote, and its bin's bound on its neighbours' (the wake-up).
+    const double cfl = m_scene.run.cfl;
+    const std::vector<double>& steps = m_hydro.particleSteps();
+    const auto& nl = m_neighbours;
+    parallelFor(m_dueSlots.size(), [&](std::size_t s) {
+        const auto a = static_cast<std::size_t>(m_dueSlots[s]);
+        const auto i = static_cast<std::size_t>(active[a]);
+        m_bins.setVote(i, steps[a]);
+        const int level = TimeBins::levelFor(cfl, steps[a], dt, TimeBins::kMaxLevel);
+        if (level + TimeBins::kWakeLevels >= TimeBins::kMaxLevel) {
+            return; // no neighbour's bin can be beyond its bound
+        }
+        // Its neighbours inside the support only: the list reaches a skin further, by an
+        // amount that depends on when it was built (a resumed run rebuilds it).
+        const int32_t row = nl.row[a];
+        for (int64_t k = nl.offset[row]; k < nl.offset[row + 1]; ++k) {
+            const auto x = static_cast<std::size_t>(nl.neighbours[k]);
+            const auto j = static_cast<std::size_t>(nl.source[x]);
+            const double dz = ps.z[i] - ps.z[j], dr = ps.r[i] - nl.sign[x] * ps.r[j];
+            const double support = sph::kKernelSupport * 0.5 * (ps.h[i] + ps.h[j]);
+            if (dz * dz + dr * dr < support * support) {
+                m_bins.wakeNeighbour(j, level);
+            }
+        }
+    });
+    // The scene's step: the smallest vote of the active particles, the stale ones of those in
+    // the course of an interval included (ties to the lowest index, at any thread count).
+    m_binVote = std::numeric_limits<double>::infinity();
+    m_binLimiter = -1;
+    for (const int32_t i : active) {
+        const double v = m_bins.vote(static_cast<std::size_t>(i));
+        if (v < m_binVote) {
+            m_binVote = v;
+            m_binLimiter = i;
+        }
+    }
 }
 
 void SphPackage::resetHalfStep() {
     m_points.half.reset(m_points.set);
     m_points.evolving.clear(m_points.set.size());
+    if (m_binned) {
+        m_bins.reset(m_points.set.size());
+    }
     m_packAll = true; // the particle arrays may have been replaced (a resume)
 }
 
@@ -240,9 +340,14 @@ void SphPackage::save(io::CheckpointState& s) const {
     if (m_hydro.options().keepPairWork) {
         m_hydro.pairWork().save(s, "pair_work_");
     }
+    if (m_binned) {
+        // Particles in the course of an interval: their half step and where they stand in it.
+        m_points.half.save(s, "half_");
+        m_bins.save(s, "bins_");
+    }
     s.extra["particle_count"] = ps.size();
-    s.extra["sph_dt_us"] = m_hydro.stableTimeStep();
-    s.extra["sph_dt_particle"] = m_hydro.limitingParticle();
+    s.extra["sph_dt_us"] = stableTimeStep();
+    s.extra["sph_dt_particle"] = limitingParticle();
 }
 
 void SphPackage::restore(const io::CheckpointState& s) {
@@ -265,13 +370,19 @@ void SphPackage::restore(const io::CheckpointState& s) {
     // here (exact, only slower by the dormant ones until the end of the run).
     resetHalfStep();
     m_points.evolving.fill(ps.size());
-    computeRates(); // the neighbour lists; the rates themselves come from the checkpoint
+    computeRates(0.0); // the neighbour lists; the rates themselves come from the checkpoint
     io::takeFields(s, "rate_", m_points.rates, sph::kRateFields);
     if (ps.hasStrength()) {
         io::takeFields(s, "rate_", m_points.rates, sph::kStrengthRateFields);
     }
     if (m_hydro.options().keepPairWork) {
         m_hydro.pairWork().restore(s, "pair_work_");
+    }
+    if (m_binned) {
+        m_points.half.restore(s, "half_");
+        m_bins.restore(s, "bins_");
+        m_binVote = io::timeStepOf(s, "sph_dt_us");
+        m_binLimiter = s.extra.at("sph_dt_particle").get<int32_t>();
     }
     m_hydro.restoreStableTimeStep(io::timeStepOf(s, "sph_dt_us"),
                                   s.extra.at("sph_dt_particle").get<int32_t>());

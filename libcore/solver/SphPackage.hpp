@@ -11,6 +11,7 @@
 #include "scene/Scene.hpp"
 #include "solver/Package.hpp"
 #include "solver/ParticleState.hpp"
+#include "solver/TimeBins.hpp"
 #include "sph/NeighbourSearch.hpp"
 #include "sph/ParticleGenerator.hpp"
 #include "sph/SphHydro.hpp"
@@ -30,8 +31,13 @@ public:
                std::vector<material::BodyMaterial> bodies, bool skipDormant);
 
     const char* name() const override { return "sph"; }
-    double stableTimeStep() const override { return m_hydro.stableTimeStep(); }
-    std::span<const double> pointSteps() const override { return m_hydro.particleSteps(); }
+    double stableTimeStep() const override {
+        return m_binned ? m_binVote : m_hydro.stableTimeStep();
+    }
+    /// Empty with time-step bins (the last evaluation covered only the particles it closed).
+    std::span<const double> pointSteps() const override {
+        return m_binned ? std::span<const double>{} : m_hydro.particleSteps();
+    }
     void kick(double dt) override;
     void drift(double dt) override;
     void evaluate(double dt) override;
@@ -42,7 +48,13 @@ public:
     void restore(const io::CheckpointState& state) override;
 
     /// The particle whose stability limit set the last vote (-1 if none).
-    int32_t limitingParticle() const { return m_hydro.limitingParticle(); }
+    int32_t limitingParticle() const {
+        return m_binned ? m_binLimiter : m_hydro.limitingParticle();
+    }
+    /// The particles whose rates the last step evaluated (all active ones without bins).
+    std::size_t evaluatedCount() const {
+        return m_binned ? m_evaluatedActive.size() : m_neighbours.active.size();
+    }
     const sph::NeighbourList& neighbours() const { return m_neighbours; }
     /// The pairs of the last evaluation (inside the support; computed, with the padding).
     const sph::PairCounts& pairCounts() const { return m_hydro.pairCounts(); }
@@ -51,7 +63,10 @@ public:
 private:
     /// Neighbour list, hydro rates and stress rates at the current state; the particles the
     /// evaluation activates join the evolving set.
-    void computeRates();
+    void computeRates(double dt);
+    /// computeRates with time-step bins: the particles whose interval ends in this base step
+    /// of length dt [us] (solver/TimeBins.hpp), their votes and their neighbours' wake-up.
+    void computeBinnedRates(double dt);
     /// Half-step arrays := state, no particle evolving, the next evaluation repacks all.
     void resetHalfStep();
     void clampSmoothingLengths();
@@ -72,6 +87,13 @@ private:
     sph::NeighbourSearchOptions m_searchOptions;
     bool m_packAll = true; ///< the next evaluation repacks every particle
     std::vector<double> m_meanVz, m_meanVr; ///< a half kick's mean velocities (payPairWork)
+    bool m_binned = false; ///< time-step bins (scene sph.time_stepping)
+    TimeBins m_bins;
+    std::vector<int32_t> m_dueSlots;        ///< slots of the active list evaluated this step
+    std::vector<int32_t> m_evaluatedActive; ///< their particles
+    std::vector<int32_t> m_evaluated;       ///< every particle whose rates were renewed
+    double m_binVote = 0.0;                 ///< the smallest vote [us]
+    int32_t m_binLimiter = -1;
 };
 
 } // namespace hvi::solver

@@ -10,5 +10,8 @@ template void MaterialPackage::addStressRates(const sph::ParticleSet&, std::span
                                               sph::ParticleRates&) const;
 template void MaterialPackage::applyPlasticity(sph::ParticleSet&, const sph::ParticleRates&,
                                                std::span<const int32_t>, double) const;
+template void MaterialPackage::applyPlasticity(sph::ParticleSet&, const sph::ParticleRates&,
+                                               std::span<const int32_t>,
+                                               const std::vector<double>&) const;
 
 } // namespace hvi::material

@@ -495,14 +495,15 @@ int64_t longestRow(const NeighbourList& list) {
 template <class Kern, bool kArtificialStress, bool kKeepWork>
 void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const HydroOptions& opt,
                    const std::vector<PairData>& data, ParticleRates& rates, double* steps,
-                   StepVote& vote, PairCounts& pairs, PairWork* work) {
+                   StepVote& vote, PairCounts& pairs, PairWork* work,
+                   const std::vector<int32_t>* slots) {
     using Shape = typename Kern::ShapeType;
     const bool axi = opt.axisymmetric;
     const bool strength = ps.hasStrength();
     const PairCoefficients coeff{opt.avAlpha, opt.avBeta, opt.avEta2,
                                  1.0 / Shape::shape(opt.spacingOverH)};
     const double inv2Pi = 0.5 / units::kPi;
-    const std::size_t activeCount = list.active.size();
+    const std::size_t activeCount = slots ? slots->size() : list.active.size();
     const PairData* pd = data.data();
     const auto pairwiseAtContrast = [&](std::size_t i) {
         const auto b = static_cast<std::size_t>(ps.body[i]);
@@ -524,7 +525,8 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
         // Dynamic chunks balance the threads (a particle's cost varies with its neighbours);
         // each particle's sums are its own, so who computes it does not change the result.
 #pragma omp for schedule(dynamic, 256)
-        for (std::size_t a = 0; a < activeCount; ++a) {
+        for (std::size_t s = 0; s < activeCount; ++s) {
+            const std::size_t a = slots ? static_cast<std::size_t>((*slots)[s]) : s;
             const int32_t i = list.active[a];
             const PairData& di = pd[i];
             const std::size_t count = keepInside(list, list.row[a], i, pd, inside);
@@ -580,7 +582,7 @@ void evaluatePairs(const ParticleSet& ps, const NeighbourList& list, const Hydro
 } // namespace
 
 void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, ParticleRates& rates,
-                        const std::vector<int32_t>* changed) {
+                        const std::vector<int32_t>* changed, const std::vector<int32_t>* slots) {
     const std::size_t n = ps.size();
     if (m_data.size() != n) {
         m_data.resize(n);
@@ -639,7 +641,7 @@ void SphHydro::evaluate(const ParticleSet& ps, const NeighbourList& list, Partic
         using Kern = decltype(kernel);
         const auto run = [&](auto stress, auto keep) {
             evaluatePairs<Kern, decltype(stress)::value, decltype(keep)::value>(
-                ps, list, m_options, m_data, rates, steps, vote, m_pairs, &m_work);
+                ps, list, m_options, m_data, rates, steps, vote, m_pairs, &m_work, slots);
         };
         const bool stress = m_options.artificialStress > 0.0;
         if (m_options.keepPairWork) {

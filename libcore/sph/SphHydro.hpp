@@ -131,9 +131,12 @@ public:
     /// Adds this package's rates for the active particles of `list` into `rates` (which the
     /// caller zeroes), and records the largest stable time step (before the Courant factor).
     /// `changed` (sorted or not) lists the particles whose state may differ from the last
-    /// call; null means all (and the first call always packs all).
+    /// call; null means all (and the first call always packs all). `slots`: only the active
+    /// particles of these slots of `list.active` (time-step bins; null: all of them), whose
+    /// entries alone particleSteps() then sets.
     void evaluate(const ParticleSet& particles, const NeighbourList& list, ParticleRates& rates,
-                  const std::vector<int32_t>* changed = nullptr);
+                  const std::vector<int32_t>* changed = nullptr,
+                  const std::vector<int32_t>* slots = nullptr);
 
     /// h / signal speed, minimised over the particles of the last evaluate() [us].
     double stableTimeStep() const { return m_stableDt; }
