@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,14 +26,27 @@ void putFields(CheckpointState& s, std::string_view prefix, const Set& set,
     }
 }
 
-inline void takeArray(const CheckpointState& s, const std::string& name,
-                      std::vector<double>& into) {
-    auto it = s.doubles.find(name);
-    if (it == s.doubles.end() || it->second.size() != into.size()) {
+/// The array `name` of `arrays` (a checkpoint's doubles or ints) into `into`, which must
+/// have its length already.
+template <class T>
+void takeArrayFrom(const std::map<std::string, std::vector<T>>& arrays, const std::string& name,
+                   std::vector<T>& into) {
+    auto it = arrays.find(name);
+    if (it == arrays.end() || it->second.size() != into.size()) {
         throw InputError("<checkpoint>", "/" + name, "missing or wrong size",
                          "a checkpoint written by this version of hvi-run");
     }
     into = it->second;
+}
+
+inline void takeArray(const CheckpointState& s, const std::string& name,
+                      std::vector<double>& into) {
+    takeArrayFrom(s.doubles, name, into);
+}
+
+inline void takeArray(const CheckpointState& s, const std::string& name,
+                      std::vector<int32_t>& into) {
+    takeArrayFrom(s.ints, name, into);
 }
 
 template <class Set, std::size_t N>

@@ -138,9 +138,8 @@ void SphPackage::drift(double dt) {
     if (m_binned) {
         // An interval that ends otherwise than planned first takes its half step to its
         // actual midpoint (solver/TimeBins.hpp).
-        lanes.shiftEach(m_bins.closing(), ps.alive, [this](std::size_t i) {
-            return m_bins.offPlan(i) ? m_bins.closingCorrection(i) : 0.0;
-        });
+        lanes.shiftEach(m_bins.shortened(), ps.alive,
+                        [this](std::size_t i) { return m_bins.closingCorrection(i); });
         lanes.predictEach(m_points.evolving.items(), ps.alive,
                           [this](std::size_t i) { return m_bins.predictionOffset(i); });
         return;

@@ -1,7 +1,7 @@
 #include "solver/TimeBins.hpp"
 
-#include "core/Error.hpp"
 #include "core/Parallel.hpp"
+#include "io/CheckpointFields.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +21,7 @@ void TimeBins::reset(std::size_t n) {
     m_due.assign(n, 1);
     m_opening.clear();
     m_closing.clear();
+    m_shortened.clear();
 }
 
 int TimeBins::levelFor(double cfl, double stableStep, double dt, int cap) {
@@ -60,6 +61,7 @@ void TimeBins::beginStep(std::span<const int32_t> evolving, const std::vector<ui
     });
     m_opening.clear();
     m_closing.clear();
+    m_shortened.clear();
     for (const int32_t i : evolving) {
         const auto k = static_cast<std::size_t>(i);
         if (!alive[k]) {
@@ -70,6 +72,9 @@ void TimeBins::beginStep(std::span<const int32_t> evolving, const std::vector<ui
         }
         if (m_due[k] != 0) {
             m_closing.push_back(i);
+            if (m_interval[k] != m_planned[k]) {
+                m_shortened.push_back(i);
+            }
         }
     }
 }
@@ -110,30 +115,13 @@ void TimeBins::save(io::CheckpointState& s, const std::string& prefix) const {
 }
 
 void TimeBins::restore(const io::CheckpointState& s, const std::string& prefix) {
-    const std::size_t n = m_level.size();
-    const auto ints = [&](const std::string& name, std::vector<int32_t>& into) {
-        const auto it = s.ints.find(prefix + name);
-        if (it == s.ints.end() || it->second.size() != n) {
-            throw InputError("<checkpoint>", "/" + prefix + name, "missing or wrong size",
-                             "a checkpoint written by this version of hvi-run");
-        }
-        into = it->second;
-    };
-    const auto doubles = [&](const std::string& name, std::vector<double>& into) {
-        const auto it = s.doubles.find(prefix + name);
-        if (it == s.doubles.end() || it->second.size() != n) {
-            throw InputError("<checkpoint>", "/" + prefix + name, "missing or wrong size",
-                             "a checkpoint written by this version of hvi-run");
-        }
-        into = it->second;
-    };
-    ints("level", m_level);
-    ints("taken", m_taken);
-    ints("cap", m_cap);
-    ints("woken", m_woken);
-    doubles("elapsed_us", m_elapsed);
-    doubles("planned_us", m_planned);
-    doubles("vote_us", m_vote);
+    io::takeArray(s, prefix + "level", m_level);
+    io::takeArray(s, prefix + "taken", m_taken);
+    io::takeArray(s, prefix + "cap", m_cap);
+    io::takeArray(s, prefix + "woken", m_woken);
+    io::takeArray(s, prefix + "elapsed_us", m_elapsed);
+    io::takeArray(s, prefix + "planned_us", m_planned);
+    io::takeArray(s, prefix + "vote_us", m_vote);
 }
 
 } // namespace hvi::solver

@@ -45,7 +45,6 @@ public:
 
     /// Every point of `n` opens an interval of one base step at its next step.
     void reset(std::size_t n);
-    std::size_t size() const { return m_level.size(); }
 
     /// The start of a base step of length dt [us]: the evolving alive points between
     /// intervals open one (its length from their vote, `cfl` times their stable step), and
@@ -56,6 +55,9 @@ public:
     /// (both ascending; the evolving points of the step only).
     const std::vector<int32_t>& opening() const { return m_opening; }
     const std::vector<int32_t>& closing() const { return m_closing; }
+    /// The closing points whose interval ends otherwise than planned (the base step changed,
+    /// or they were woken): their half step is corrected first.
+    const std::vector<int32_t>& shortened() const { return m_shortened; }
     /// Whether point i's rates are evaluated at the end of this step: its interval closes, or
     /// it did not evolve before (a new or newly woken particle, one base step).
     bool evaluated(std::size_t i) const { return m_due[i] != 0; }
@@ -69,8 +71,6 @@ public:
     /// The interval the closing step ends, the step of the plasticity and damage update [us].
     double interval(std::size_t i) const { return m_interval[i]; }
     const std::vector<double>& intervals() const { return m_interval; }
-    /// Whether this step's end differs from the plan (then the half step is corrected).
-    bool offPlan(std::size_t i) const { return m_interval[i] != m_planned[i]; }
 
     /// A point evaluated for the first time in this base step of length dt [us] (it did not
     /// evolve when the step began): one base step, starting now.
@@ -114,7 +114,7 @@ private:
     std::vector<double> m_interval; ///< elapsed time at the end of this step [us]
     std::vector<double> m_offset;   ///< this step's prediction offset [us]
     std::vector<uint8_t> m_due;    ///< this step closes its interval
-    std::vector<int32_t> m_opening, m_closing;
+    std::vector<int32_t> m_opening, m_closing, m_shortened;
 };
 
 } // namespace hvi::solver

@@ -51,9 +51,9 @@ TEST(TimeBins, IntervalsCloseAfterTheirStepsWithTheirOffsets) {
             EXPECT_DOUBLE_EQ(bins.predictionOffset(0), 0.5); // closing: half its step
         }
         if (step == 3) {
-            EXPECT_TRUE(bins.opening().empty() == false);
+            EXPECT_FALSE(bins.opening().empty());
             EXPECT_DOUBLE_EQ(bins.interval(2), 4.0);
-            EXPECT_FALSE(bins.offPlan(2));
+            EXPECT_TRUE(bins.shortened().empty());
             EXPECT_DOUBLE_EQ(bins.closingHalf(2), 2.0);
         }
         bins.endStep(items, alive, 1.0);
@@ -73,7 +73,7 @@ TEST(TimeBins, AWokenIntervalClosesAtTheNextStepAndReopensUnderTheCap) {
     bins.beginStep(items, alive, 1.0, 1.0);
     ASSERT_EQ(bins.closing(), (std::vector<int32_t>{0, 1}));
     EXPECT_DOUBLE_EQ(bins.interval(1), 2.0);
-    EXPECT_TRUE(bins.offPlan(1));
+    EXPECT_EQ(bins.shortened(), (std::vector<int32_t>{1}));
     EXPECT_DOUBLE_EQ(bins.closingCorrection(1), 0.5 * (2.0 - 64.0));
     bins.endStep(items, alive, 1.0);
     // It reopens at level 2 (4 steps) although its vote allows 64.
