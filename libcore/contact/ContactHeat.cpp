@@ -94,9 +94,15 @@ void markContacts(const ContactPoints& pts, const ConstraintSet& set, StepContac
         if (con.kicked) {
             if (pts.isParticle(k)) {
                 step.touchedParticles.push_back(static_cast<int32_t>(pts.pointOf(k)));
+            } else {
+                step.touchedNodes.push_back(static_cast<int32_t>(pts.pointOf(k)));
             }
             if (con.target < 0) {
                 step.touchedParticles.push_back(static_cast<int32_t>(con.j));
+            } else {
+                for (std::size_t q = con.nodeFirst; q < con.nodeFirst + con.nodeCount; ++q) {
+                    step.touchedNodes.push_back(set.footNodes[q].index);
+                }
             }
         }
         if (con.impulse > 0.0) {

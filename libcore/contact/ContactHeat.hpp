@@ -45,6 +45,7 @@ namespace hvi::contact {
 /// Who was in contact in a step.
 struct StepContacts {
     std::vector<int32_t> touchedParticles; ///< particles whose velocity changed (may repeat)
+    std::vector<int32_t> touchedNodes;     ///< FE nodes whose velocity changed (may repeat)
     std::size_t contactCount = 0;          ///< constraints with an impulse
 };
 

@@ -27,6 +27,7 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
     m_surface.update(el, nd, m_options.axisymmetric);
     m_contactCount = 0;
     m_touchedParticles.clear();
+    m_touchedNodes.clear();
     double maxSize = 0.0;
     for (const auto& b : m_bodies) {
         maxSize = std::max(maxSize, b.size);
@@ -47,6 +48,7 @@ void KinematicContact::run(sph::ParticleSet& ps, const ParticleHalfStep& half, f
     shareHeat(pts, constraints, dt, m_energy);
     m_contactCount = step.contactCount;
     m_touchedParticles = std::move(step.touchedParticles);
+    m_touchedNodes = std::move(step.touchedNodes);
 }
 
 } // namespace hvi::contact

@@ -96,6 +96,8 @@ public:
     /// Particles whose half-step state the last resolve() changed (may repeat): the solver
     /// must advance them even when the SPH evaluation skips them as dormant.
     const std::vector<int32_t>& touchedParticles() const { return m_touchedParticles; }
+    /// FE nodes whose half-step velocity the last resolve() changed (may repeat).
+    const std::vector<int32_t>& touchedNodes() const { return m_touchedNodes; }
     /// Master segments (FE surface edges) in use.
     std::size_t segmentCount() const { return m_surface.segmentCount(); }
 
@@ -107,6 +109,7 @@ private:
     std::vector<ContactBody> m_bodies;
     fe::SurfaceTopology m_surface;    ///< master segments, node-element lists
     std::vector<int32_t> m_touchedParticles;
+    std::vector<int32_t> m_touchedNodes;
     double m_stableDt = std::numeric_limits<double>::infinity();
     ContactEnergy m_energy;
     std::size_t m_contactCount = 0;

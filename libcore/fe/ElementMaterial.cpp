@@ -11,5 +11,8 @@ template void MaterialPackage::addStressRates(const fe::ElementSet&, std::span<c
                                               fe::ElementRates&) const;
 template void MaterialPackage::applyPlasticity(fe::ElementSet&, const fe::ElementRates&,
                                                std::span<const int32_t>, double) const;
+template void MaterialPackage::applyPlasticity(fe::ElementSet&, const fe::ElementRates&,
+                                               std::span<const int32_t>,
+                                               const std::vector<double>&) const;
 
 } // namespace hvi::material

@@ -61,6 +61,7 @@ FeSolid::FeSolid(FeOptions options, NodeSet nodes, ElementSet elements,
     const std::size_t nn = m_nodes.size();
     m_rates.resize(ne);
     m_elementForce.assign(8 * ne, 0.0);
+    m_cornerWeight.assign(ne, 0.0);
     m_hourglassRate.assign(ne, 0.0);
     m_ownStep.assign(ne, kNoLimit);
     m_volumetricRate.assign(ne, 0.0);
@@ -182,38 +183,178 @@ void FeSolid::gatherNodesOf(std::size_t element) {
     }
 }
 
-void FeSolid::update(double dt, const material::MaterialPackage& materials) {
-    selectEvaluated();
-    m_erodedNow.clear();
-    // Every element is updated independently, so the evaluated list is cut into tiles that each
-    // go through the whole update (kinematics, deviator, energy, equation of state, forces)
+/// The one step of the global time loop, for every element alike.
+struct FeSolid::SameStep {
+    double dt;
+    double of(std::size_t /*element*/) const { return dt; }
+    void meanVelocities(std::size_t /*element*/, QuadState& /*corners*/) const {}
+    void plasticity(const material::MaterialPackage& materials, ElementSet& el,
+                    const ElementRates& rates, std::span<const int32_t> tile) const {
+        materials.applyPlasticity(el, rates, tile, dt);
+    }
+};
+
+/// Each element's own interval (time-step bins): over it, the corners moved from their
+/// start to their current positions, so the strain increment is that of their mean
+/// velocities at the interval's mid-geometry (the central difference over the interval).
+struct FeSolid::OwnInterval {
+    const Intervals& steps;
+    double of(std::size_t i) const { return (*steps.interval)[i]; }
+    void meanVelocities(std::size_t i, QuadState& q) const {
+        const double interval = of(i);
+        if (interval == steps.baseStep) {
+            return; // one base step: the drift's own velocities, as the global loop
+        }
+        const double* x0 = steps.start->data() + 8 * i;
+        for (std::size_t a = 0; a < 4; ++a) {
+            q.vz[a] = (q.z[a] - x0[2 * a]) / interval;
+            q.vr[a] = (q.r[a] - x0[2 * a + 1]) / interval;
+        }
+    }
+    void plasticity(const material::MaterialPackage& materials, ElementSet& el,
+                    const ElementRates& rates, std::span<const int32_t> tile) const {
+        materials.applyPlasticity(el, rates, tile, *steps.interval);
+    }
+};
+
+template <class Steps>
+void FeSolid::updateList(std::span<const int32_t> list, const Steps& steps,
+                         const material::MaterialPackage& materials,
+                         std::vector<StepVote>& votes) {
+    // Every element is updated independently, so the list is cut into tiles that each go
+    // through the whole update (kinematics, deviator, energy, equation of state, forces)
     // while their data is still in cache, instead of one pass over the list per stage.
-    zeroForcesIfFull();
-    const std::size_t count = m_evaluated.size();
+    const std::size_t count = list.size();
     const std::size_t tiles = (count + kTileSize - 1) / kTileSize;
-    std::vector<StepVote> votes(static_cast<std::size_t>(omp_get_max_threads()));
+    votes.assign(static_cast<std::size_t>(omp_get_max_threads()), StepVote{});
 #pragma omp parallel if (count > kParallelMinItems)
     {
         StepVote local;
 #pragma omp for schedule(static)
         for (std::size_t t = 0; t < tiles; ++t) {
             const std::size_t first = t * kTileSize;
-            updateTile({m_evaluated.data() + first, std::min(kTileSize, count - first)}, dt,
-                       materials, local);
+            updateTile(list.subspan(first, std::min(kTileSize, count - first)), steps, materials,
+                       local);
         }
         votes[static_cast<std::size_t>(omp_get_thread_num())] = local;
     }
     // 5: erosion (inverted, folded, crushed or strained in step 1, or failed), in ascending
     // order whatever the thread count.
-    for (const int32_t e : m_evaluated) {
+    for (const int32_t e : list) {
         if (m_erode[static_cast<std::size_t>(e)]) {
             erode(static_cast<std::size_t>(e));
         }
     }
+    m_updatedCount = count;
+}
+
+void FeSolid::update(double dt, const material::MaterialPackage& materials) {
+    selectEvaluated();
+    m_erodedNow.clear();
+    zeroForcesIfFull();
+    std::vector<StepVote> votes;
+    updateList(m_evaluated, SameStep{dt}, materials, votes);
     finishAssembly(votes);
 }
 
-void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
+std::span<const int32_t> FeSolid::wake() {
+    selectEvaluated();
+    m_wokenAlive.clear();
+    for (const int32_t e : m_woken) {
+        if (m_elements.alive[static_cast<std::size_t>(e)]) {
+            m_wokenAlive.push_back(e);
+        }
+    }
+    return m_wokenAlive;
+}
+
+void FeSolid::updateElements(std::span<const int32_t> elements, const Intervals& steps,
+                             const material::MaterialPackage& materials) {
+    m_erodedNow.clear();
+    std::vector<StepVote> votes;
+    updateList(elements, OwnInterval{steps}, materials, votes);
+    // The scene's step: the smallest vote of the evaluated elements, the stale ones of those
+    // in the course of an interval included (ties to the lowest index, at any thread count).
+    StepVote vote;
+    vote.offer(m_referenceDt, -1);
+    for (const int32_t e : m_evaluated) {
+        const auto i = static_cast<std::size_t>(e);
+        if (m_elements.alive[i] && m_ownStep[i] < kNoLimit) {
+            vote.offer(m_ownStep[i], e);
+        }
+    }
+    m_stableDt = vote.dt;
+    m_limitingElement = vote.element;
+}
+
+void FeSolid::gatherImpulses(std::span<const int32_t> elements, std::span<const double> weight) {
+    auto& nd = m_nodes;
+    if (m_impulseFull) {
+        // The first gather (or the first after a resume): any node may hold a force.
+        m_impulseFull = false;
+        std::fill(nd.fz.begin(), nd.fz.end(), 0.0);
+        std::fill(nd.fr.begin(), nd.fr.end(), 0.0);
+        m_impulseMarked.assign(nd.size(), 0);
+        m_impulseNodes.clear();
+    }
+    for (const int32_t n : m_impulseNodes) {
+        const auto k = static_cast<std::size_t>(n);
+        nd.fz[k] = 0.0;
+        nd.fr[k] = 0.0;
+        m_impulseMarked[k] = 0;
+    }
+    m_impulseNodes.clear();
+    for (std::size_t k = 0; k < elements.size(); ++k) {
+        const auto e = static_cast<std::size_t>(elements[k]);
+        m_cornerWeight[e] = weight[k];
+        for (int a = 0; a < 4; ++a) {
+            const auto n = static_cast<std::size_t>(m_elements.node(e, a));
+            if (!m_impulseMarked[n]) {
+                m_impulseMarked[n] = 1;
+                m_impulseNodes.push_back(static_cast<int32_t>(n));
+            }
+        }
+    }
+    // Per node over its corners in element order (the weights of unlisted elements are 0).
+    const std::size_t count = m_impulseNodes.size();
+#pragma omp parallel for schedule(static) if (count > kParallelMinItems)
+    for (std::size_t g = 0; g < count; ++g) {
+        const auto n = static_cast<std::size_t>(m_impulseNodes[g]);
+        double fz = 0.0, fr = 0.0;
+        for (int64_t k = m_nodeCorners.offset[n]; k < m_nodeCorners.offset[n + 1]; ++k) {
+            const auto slot =
+                static_cast<std::size_t>(m_nodeCorners.corners[static_cast<std::size_t>(k)]);
+            const double w = m_cornerWeight[slot / 4];
+            fz += w * m_elementForce[2 * slot];
+            fr += w * m_elementForce[2 * slot + 1];
+        }
+        nd.fz[n] = fz;
+        nd.fr[n] = fr;
+    }
+    for (const int32_t e : elements) {
+        m_cornerWeight[static_cast<std::size_t>(e)] = 0.0;
+    }
+}
+
+void FeSolid::restoreAwake(const std::vector<uint8_t>& awake) {
+    m_elementAwake = awake;
+    m_fullSelection = false;
+    m_erodedSinceSelection = false;
+    m_nodeAwake.assign(m_nodes.size(), 0);
+    m_nodeMarked.assign(m_nodes.size(), 0);
+    m_gatherNodes.clear();
+    m_evaluated.clear();
+    for (std::size_t i = 0; i < m_elements.size(); ++i) {
+        if (m_elementAwake[i] && m_elements.alive[i]) {
+            m_evaluated.push_back(static_cast<int32_t>(i));
+            gatherNodesOf(i);
+        }
+    }
+    m_impulseFull = true;
+}
+
+template <class Steps>
+void FeSolid::updateTile(std::span<const int32_t> tile, const Steps& steps,
                          const material::MaterialPackage& materials, StepVote& vote) {
     auto& el = m_elements;
     const auto& nd = m_nodes;
@@ -227,7 +368,9 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
     for (std::size_t k = 0; k < tile.size(); ++k) {
         const auto i = static_cast<std::size_t>(tile[k]);
         StepStart& s0 = start[k];
-        const QuadState end = gather(nd, el, i);
+        const double dt = steps.of(i);
+        QuadState end = gather(nd, el, i);
+        steps.meanVelocities(i, end);
         QuadState mid = end;
         for (std::size_t a = 0; a < 4; ++a) {
             mid.z[a] -= 0.5 * dt * end.vz[a];
@@ -321,14 +464,15 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
         materials.addStressRates(el, tile, m_rates);
         for (const int32_t element : tile) {
             const auto i = static_cast<std::size_t>(element);
+            const double dt = steps.of(i);
             el.szz[i] += dt * m_rates.dszz[i];
             el.srr[i] += dt * m_rates.dsrr[i];
             el.srz[i] += dt * m_rates.dsrz[i];
         }
-        materials.applyPlasticity(el, m_rates, tile, dt);
+        steps.plasticity(materials, el, m_rates, tile);
     }
 
-    updateEnergy(tile, start.data(), dt, materials);
+    updateEnergy(tile, start.data(), steps, materials);
 
     // 6: forces at the end-of-step geometry (an element about to erode holds none).
     for (const int32_t element : tile) {
@@ -336,8 +480,9 @@ void FeSolid::updateTile(std::span<const int32_t> tile, double dt,
     }
 }
 
-void FeSolid::updateEnergy(std::span<const int32_t> tile, const StepStart* start, double dt,
-                           const material::MaterialPackage& materials) {
+template <class Steps>
+void FeSolid::updateEnergy(std::span<const int32_t> tile, const StepStart* start,
+                           const Steps& steps, const material::MaterialPackage& materials) {
     auto& el = m_elements;
     const bool strength = el.hasStrength();
     // A predictor with the start pressure, then the correction -(p_pred - p_start) dV / 2m.
@@ -358,7 +503,7 @@ void FeSolid::updateEnergy(std::span<const int32_t> tile, const StepStart* start
                                  stt * m_rates.hoopRate[i] +
                                  srz * (m_rates.dvzDr[i] + m_rates.dvrDz[i]);
             const double meanVolume = m_volume[i] - 0.5 * dV;
-            deviatoricWork = dt * power * meanVolume;
+            deviatoricWork = steps.of(i) * power * meanVolume;
         }
         el.e[i] = s0.energy +
                   (-(s0.pressure + el.q[i]) * dV + deviatoricWork + s0.hourglassWork) / el.mass[i];

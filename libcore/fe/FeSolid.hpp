@@ -92,6 +92,48 @@ public:
     /// Forces at the current state without advancing anything (start of a run, resume).
     void computeForces(const material::MaterialPackage& materials);
 
+    /// Time-step bins (solver/FePackage.hpp) take the update in three parts, and the node
+    /// forces as impulses:
+    /// wake() selects the elements to evaluate from now on and returns those that woke in
+    /// this step (alive, ascending; they join the evaluated list);
+    /// updateElements() advances the listed elements (ascending), each over its own interval
+    /// `steps.interval[i]` [us]: its strain rates from the mean velocities of its corners over
+    /// the interval, (x - x_start) / interval with x_start = `steps.start[8 i + 2 a]` (z, r of
+    /// corner a), or from the node velocities when the interval is one base step; it erodes and
+    /// votes as update() does, the stale votes of the other evaluated elements included;
+    /// gatherImpulses() sets the force of every node of the listed elements to the sum of
+    /// `weight[k]` times element `elements[k]`'s corner force, and zeroes the others it set
+    /// before (the node kick of dt/2 f/m then applies weight dt/2 times the element force).
+    struct Intervals {
+        const std::vector<double>* interval = nullptr; ///< per element [us]
+        const std::vector<double>* start = nullptr;    ///< 8 per element [mm]
+        double baseStep = 0.0;                         ///< [us]
+    };
+    std::span<const int32_t> wake();
+    void updateElements(std::span<const int32_t> elements, const Intervals& steps,
+                        const material::MaterialPackage& materials);
+    void gatherImpulses(std::span<const int32_t> elements, std::span<const double> weight);
+    /// The alive, non-dormant elements (ascending), and each element's corner forces of its
+    /// last evaluation (8 per element), its own stable step then [us], its awake flag and its
+    /// volume (checkpointed with time-step bins: at a resume they are not those of the
+    /// current positions).
+    const std::vector<int32_t>& evaluatedElements() const { return m_evaluated; }
+    std::vector<double>& cornerForces() { return m_elementForce; }
+    const std::vector<double>& cornerForces() const { return m_elementForce; }
+    std::vector<double>& ownSteps() { return m_ownStep; }
+    const std::vector<double>& ownSteps() const { return m_ownStep; }
+    const std::vector<uint8_t>& awakeFlags() const { return m_elementAwake; }
+    /// Each element's swept volume at its last evaluation [mm^3].
+    std::vector<double>& volumes() { return m_volume; }
+    const std::vector<double>& volumes() const { return m_volume; }
+    /// After a restore: the awake set is the checkpoint's, the element forces are kept.
+    void restoreAwake(const std::vector<uint8_t>& awake);
+    const NodeCorners& nodeCorners() const { return m_nodeCorners; }
+    /// The nodes whose force the last gatherImpulses() set (null before the first).
+    const std::vector<int32_t>* impulseNodes() const {
+        return m_impulseFull ? nullptr : &m_impulseNodes;
+    }
+
     /// Stable time step of the last update, before the Courant factor [us] (+inf: no element).
     double stableTimeStep() const { return m_stableDt; }
     /// Each evaluated element's own vote in the last assembly [us] (+inf: none cast).
@@ -108,7 +150,8 @@ public:
     std::size_t erodedCount() const { return m_erodedCount; }
     /// The elements the last update eroded, in ascending order.
     const std::vector<int32_t>& erodedThisUpdate() const { return m_erodedNow; }
-    std::size_t evaluatedCount() const { return m_evaluated.size(); }
+    /// The elements the last update evaluated.
+    std::size_t evaluatedCount() const { return m_updatedCount; }
     /// The erosion strain of every element: of its current shape for an alive element when
     /// the strain is instantaneous (the update evaluates it only where erosion is possible),
     /// otherwise (incremental, or eroded) the stored geometricStrain.
@@ -162,13 +205,22 @@ private:
         double volumeChange;  ///< [mm^3]
         double hourglassWork; ///< of the hourglass force over the step [J]
     };
+    /// Every element over the one step dt, or each over its own interval (bins).
+    struct SameStep;
+    struct OwnInterval;
     /// Steps 1-4 and 6 of update() for the listed elements (ascending).
-    void updateTile(std::span<const int32_t> tile, double dt,
+    template <class Steps>
+    void updateTile(std::span<const int32_t> tile, const Steps& steps,
                     const material::MaterialPackage& materials, StepVote& vote);
     /// Step 4: the energy with the pressure work at the mean of the start and a predicted end
     /// pressure; then erosion of the elements that failed completely.
-    void updateEnergy(std::span<const int32_t> tile, const StepStart* start, double dt,
+    template <class Steps>
+    void updateEnergy(std::span<const int32_t> tile, const StepStart* start, const Steps& steps,
                       const material::MaterialPackage& materials);
+    /// Steps 1-6 over the listed elements in tiles, the threads' votes in `votes`.
+    template <class Steps>
+    void updateList(std::span<const int32_t> list, const Steps& steps,
+                    const material::MaterialPackage& materials, std::vector<StepVote>& votes);
     /// Element forces at the current geometry and state, gathered per node; the time-step vote.
     void assembleForces();
     /// Element i's corner forces (zeros when it is eroded or about to be) and its vote, kept
@@ -179,6 +231,8 @@ private:
     /// The time step from the threads' votes, then each node's force from its elements'.
     void finishAssembly(const std::vector<StepVote>& votes);
     void erode(std::size_t element);
+    /// The time step of the threads' votes (and the undisturbed elements') [us].
+    void takeVotes(const std::vector<StepVote>& votes);
 
     FeOptions m_options;
     NodeSet m_nodes;
@@ -193,6 +247,12 @@ private:
     std::vector<double> m_hourglassRate;    ///< c_hg per element [mg/us], set in update()
     std::vector<int32_t> m_evaluated;       ///< alive, non-dormant elements of this update
     std::vector<double> m_elementSteps;     ///< their votes in the last assembly [us]
+    std::size_t m_updatedCount = 0;         ///< elements the last update evaluated
+    std::vector<double> m_cornerWeight;     ///< per element, of gatherImpulses() (0 otherwise)
+    std::vector<int32_t> m_wokenAlive;      ///< of wake()
+    std::vector<int32_t> m_impulseNodes;    ///< nodes whose force gatherImpulses() set
+    std::vector<uint8_t> m_impulseMarked;   ///< in m_impulseNodes
+    bool m_impulseFull = true;              ///< any node may hold a force (start, resume)
     std::vector<double> m_ownStep;          ///< per element, its last vote [us]
     std::vector<int32_t> m_woken, m_merged; ///< scratch of selectEvaluated()
     bool m_erodedSinceSelection = false;    ///< the list holds eroded elements

@@ -153,6 +153,7 @@ void parseControls(const json& doc, Scene& scene) {
     scene.fe.bulkViscosityQuadratic = fe.at("bulk_viscosity_quadratic");
     scene.fe.erodedToParticles = fe.at("eroded_material") == "particles";
     scene.fe.instantaneousErosionStrain = fe.at("erosion_strain") == "instantaneous";
+    scene.fe.timeBins = fe.at("time_stepping") == "bins";
 
     const json& run = doc.at("run");
     scene.run.endTime = run.at("end_time_us");

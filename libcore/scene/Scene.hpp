@@ -75,6 +75,9 @@ struct FeControls {
     /// Geometric strain for erosion: the current strain (true) or the integral of the
     /// strain rate (false).
     bool instantaneousErosionStrain = true;
+    /// Each element steps over its own power-of-two multiple of the scene's step
+    /// (solver/FePackage.hpp).
+    bool timeBins = false;
 };
 
 struct RunControls {

@@ -16,6 +16,7 @@ void ContactPackage::constrain(double dt) {
     // A dormant particle set moving by contact evolves from now on (its half-step state
     // equals its state, so the drift is all it has missed).
     m_points.evolving.include(m_contact.touchedParticles());
+    m_fe.wakeAtNodes(m_contact.touchedNodes());
 }
 
 void ContactPackage::prepare(double dtGuess) {

@@ -38,7 +38,8 @@ Simulation::Simulation(const scene::Scene& sceneIn, const material::MaterialLibr
         feOptions.instantaneousErosionStrain = m_scene.fe.instantaneousErosionStrain;
         std::vector<contact::ContactBody> contactBodies = std::move(parts.fe.contactBodies);
         m_fe = std::make_unique<FePackage>(feOptions, std::move(parts.fe), m_points,
-                                           m_sph->materials());
+                                           m_sph->materials(), m_scene.fe.timeBins,
+                                           m_scene.run.cfl);
         contact::ContactOptions contactOptions;
         contactOptions.axisymmetric = axi;
         contactOptions.smoothingLengthFactor = m_scene.sph.smoothingLengthFactor;

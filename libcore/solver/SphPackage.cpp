@@ -235,7 +235,8 @@ void SphPackage::computeBinnedRates(double dt) {
         }
         m_dueSlots.push_back(static_cast<int32_t>(a));
         m_evaluatedActive.push_back(active[a]);
-        if (!m_points.evolving.contains(i)) {
+        if (!m_bins.begun(i)) {
+            // New to the evolving set in this step (set moving by contact, or woken).
             m_bins.admit(i, dt);
             m_evaluated.push_back(active[a]);
         }

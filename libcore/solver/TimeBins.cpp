@@ -19,6 +19,8 @@ void TimeBins::reset(std::size_t n) {
     m_interval.assign(n, 0.0);
     m_offset.assign(n, 0.0);
     m_due.assign(n, 1);
+    m_stepStamp.assign(n, -1);
+    m_stepCount = 0;
     m_opening.clear();
     m_closing.clear();
     m_shortened.clear();
@@ -36,12 +38,14 @@ int TimeBins::levelFor(double cfl, double stableStep, double dt, int cap) {
 void TimeBins::beginStep(std::span<const int32_t> evolving, const std::vector<uint8_t>& alive,
                          double cfl, double dt) {
     const std::size_t count = evolving.size();
+    ++m_stepCount;
     parallelFor(count, [&](std::size_t a) {
         const auto i = static_cast<std::size_t>(evolving[a]);
         if (!alive[i]) {
             m_due[i] = 0;
             return;
         }
+        m_stepStamp[i] = m_stepCount;
         if (m_taken[i] == 0) {
             m_level[i] = levelFor(cfl, m_vote[i], dt, std::min(m_cap[i], kMaxLevel));
             m_planned[i] = std::ldexp(dt, m_level[i]);
@@ -92,8 +96,8 @@ void TimeBins::endStep(std::span<const int32_t> evolving, const std::vector<uint
                        double dt) {
     parallelFor(evolving.size(), [&](std::size_t a) {
         const auto i = static_cast<std::size_t>(evolving[a]);
-        if (!alive[i]) {
-            return;
+        if (!alive[i] || !begun(i)) {
+            return; // an admitted point is due, so its interval ends here too (taken 0)
         }
         if (m_due[i] != 0) {
             m_taken[i] = 0;

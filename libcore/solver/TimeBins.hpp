@@ -72,6 +72,10 @@ public:
     double interval(std::size_t i) const { return m_interval[i]; }
     const std::vector<double>& intervals() const { return m_interval; }
 
+    /// Whether point i was among the evolving alive points of this step's beginStep(); one
+    /// that joined them since (a particle set moving by contact, or made from an eroded
+    /// element) has no interval yet, and opens one at the next step.
+    bool begun(std::size_t i) const { return m_stepStamp[i] == m_stepCount; }
     /// A point evaluated for the first time in this base step of length dt [us] (it did not
     /// evolve when the step began): one base step, starting now.
     void admit(std::size_t i, double dt);
@@ -83,8 +87,10 @@ public:
     /// An evaluated point of bin `level` next to point j: j's next interval is at most
     /// kWakeLevels longer, and a longer one running now closes at the end of the next step.
     /// Thread-safe (relaxed atomics; the outcome does not depend on the order).
-    void wakeNeighbour(std::size_t j, int level) {
-        const int32_t bound = level + kWakeLevels;
+    void wakeNeighbour(std::size_t j, int level) { limit(j, level + kWakeLevels); }
+    /// Point j's next interval is in bin `bound` at most, and a longer one running now closes
+    /// at the end of the next step (thread-safe as wakeNeighbour).
+    void limit(std::size_t j, int32_t bound) {
         std::atomic_ref<int32_t> cap(m_cap[j]);
         int32_t seen = cap.load(std::memory_order_relaxed);
         while (seen > bound &&
@@ -96,7 +102,8 @@ public:
         }
     }
 
-    /// The end of the base step dt [us]: closed intervals end, the others advance.
+    /// The end of the base step dt [us]: closed intervals end, the others that began the step
+    /// advance.
     void endStep(std::span<const int32_t> evolving, const std::vector<uint8_t>& alive, double dt);
 
     /// Its arrays into a checkpoint under `prefix`, and back.
@@ -114,6 +121,8 @@ private:
     std::vector<double> m_interval; ///< elapsed time at the end of this step [us]
     std::vector<double> m_offset;   ///< this step's prediction offset [us]
     std::vector<uint8_t> m_due;    ///< this step closes its interval
+    std::vector<int64_t> m_stepStamp; ///< the count of the last beginStep() it was in
+    int64_t m_stepCount = 0;          ///< beginStep() calls (not checkpointed: per step)
     std::vector<int32_t> m_opening, m_closing, m_shortened;
 };
 

@@ -119,3 +119,24 @@ TEST(TimeBins, APointNotYetEvolvingIsEvaluatedForOneBaseStep) {
     EXPECT_DOUBLE_EQ(bins.closingHalf(1), 0.25);
     EXPECT_DOUBLE_EQ(bins.interval(1), 0.5);
 }
+
+TEST(TimeBins, APointThatJoinsInTheCourseOfAStepOpensItsIntervalAtTheNext) {
+    // Point 1 is dead when the step begins (an unused slot that an eroded element fills
+    // during the step) but evolving and alive when it ends: it began no interval, so the end
+    // of the step leaves it at the start of one, as a resumed run that counted it evolving
+    // all along must find it.
+    TimeBins bins;
+    bins.reset(2);
+    const auto items = all(2);
+    std::vector<uint8_t> alive{1, 0};
+    bins.setVote(0, 4.0);
+    bins.beginStep(items, alive, 1.0, 1.0);
+    EXPECT_TRUE(bins.begun(0));
+    EXPECT_FALSE(bins.begun(1));
+    alive[1] = 1;
+    bins.endStep(items, alive, 1.0);
+    bins.setVote(1, 4.0);
+    bins.beginStep(items, alive, 1.0, 1.0);
+    EXPECT_EQ(bins.opening(), std::vector<int32_t>{1}); // point 0 is in its first interval
+    EXPECT_DOUBLE_EQ(bins.openingHalf(1), 2.0);         // a whole interval of its own
+}
