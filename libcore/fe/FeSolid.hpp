@@ -231,8 +231,6 @@ private:
     /// The time step from the threads' votes, then each node's force from its elements'.
     void finishAssembly(const std::vector<StepVote>& votes);
     void erode(std::size_t element);
-    /// The time step of the threads' votes (and the undisturbed elements') [us].
-    void takeVotes(const std::vector<StepVote>& votes);
 
     FeOptions m_options;
     NodeSet m_nodes;
